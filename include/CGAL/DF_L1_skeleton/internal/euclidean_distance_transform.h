@@ -1,0 +1,127 @@
+// Copyright (c) 2026 DF_L1_skeleton contributors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+#ifndef CGAL_DF_L1_SKELETON_INTERNAL_EUCLIDEAN_DISTANCE_TRANSFORM_H
+#define CGAL_DF_L1_SKELETON_INTERNAL_EUCLIDEAN_DISTANCE_TRANSFORM_H
+
+#include <CGAL/tags.h>
+
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#endif
+
+#include <array>
+#include <cstddef>
+#include <limits>
+#include <type_traits>
+#include <vector>
+
+namespace CGAL {
+namespace DF_L1 {
+namespace internal {
+
+// Squared distance of "no site in this row yet"; larger than any real squared distance
+// in a grid of fewer than 2^12 voxels a side, yet exact in float arithmetic.
+constexpr float EDT_INFINITY = 1e20f;
+
+// Lower envelope of the parabolas y = f[q] + (x - q)^2 (Felzenszwalb & Huttenlocher
+// 2012): the exact 1D squared distance transform in linear time. `v` and `z` are scratch.
+inline void squared_distance_transform_1d(const float* f, float* d, int n, std::vector<int>& v,
+                                          std::vector<double>& z)
+{
+  v.resize(n);
+  z.resize(n + 1);
+  int k = -1;
+  for(int q = 0; q < n; ++q)
+  {
+    if(f[q] >= EDT_INFINITY)
+      continue;
+    double s = 0;
+    while(k >= 0)
+    {
+      const int p = v[k];
+      s = ((double(f[q]) + double(q) * q) - (double(f[p]) + double(p) * p)) / (2.0 * (q - p));
+      if(s > z[k])
+        break;
+      --k;
+    }
+    ++k;
+    v[k] = q;
+    z[k] = k == 0 ? -std::numeric_limits<double>::infinity() : s;
+    z[k + 1] = std::numeric_limits<double>::infinity();
+  }
+  if(k < 0)
+  {
+    for(int q = 0; q < n; ++q)
+      d[q] = EDT_INFINITY;
+    return;
+  }
+  int j = 0;
+  for(int q = 0; q < n; ++q)
+  {
+    while(z[j + 1] < q)
+      ++j;
+    const double dq = q - v[j];
+    d[q] = float(dq * dq + f[v[j]]);
+  }
+}
+
+template <class ConcurrencyTag, class Function>
+void for_each_row(std::size_t rows, const Function& f)
+{
+#ifdef CGAL_LINKED_WITH_TBB
+  if(std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value)
+  {
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, rows, 64),
+                      [&](const tbb::blocked_range<std::size_t>& r) {
+                        std::vector<int> v;
+                        std::vector<double> z;
+                        std::vector<float> in, out;
+                        for(std::size_t row = r.begin(); row != r.end(); ++row)
+                          f(row, v, z, in, out);
+                      });
+    return;
+  }
+#endif
+  std::vector<int> v;
+  std::vector<double> z;
+  std::vector<float> in, out;
+  for(std::size_t row = 0; row < rows; ++row)
+    f(row, v, z, in, out);
+}
+
+// In place: on input 0 at sites and EDT_INFINITY elsewhere; on output the exact squared
+// Euclidean distance (in voxel units) to the nearest site. One separable pass per axis,
+// each parallel over the independent rows of that axis; the result does not depend on
+// the number of threads.
+template <class ConcurrencyTag>
+void squared_euclidean_distance_transform(std::vector<float>& grid, const std::array<int, 3>& dims)
+{
+  const std::size_t nx = dims[0], ny = dims[1], nz = dims[2];
+  const std::size_t strides[3] = {1, nx, nx * ny};
+  for(int axis = 0; axis < 3; ++axis)
+  {
+    const std::size_t n = dims[axis];
+    const std::size_t stride = strides[axis];
+    const int a1 = (axis + 1) % 3, a2 = (axis + 2) % 3;
+    const std::size_t n1 = dims[a1];
+    for_each_row<ConcurrencyTag>(n1 * dims[a2], [&](std::size_t row, std::vector<int>& v,
+                                                    std::vector<double>& z, std::vector<float>& in,
+                                                    std::vector<float>& out) {
+      const std::size_t start = (row % n1) * strides[a1] + (row / n1) * strides[a2];
+      in.resize(n);
+      out.resize(n);
+      for(std::size_t q = 0; q < n; ++q)
+        in[q] = grid[start + q * stride];
+      squared_distance_transform_1d(in.data(), out.data(), int(n), v, z);
+      for(std::size_t q = 0; q < n; ++q)
+        grid[start + q * stride] = out[q];
+    });
+  }
+}
+
+} // namespace internal
+} // namespace DF_L1
+} // namespace CGAL
+
+#endif // CGAL_DF_L1_SKELETON_INTERNAL_EUCLIDEAN_DISTANCE_TRANSFORM_H

@@ -1,0 +1,88 @@
+// Copyright (c) 2026 DF_L1_skeleton contributors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+#ifndef CGAL_DF_L1_SKELETON_NAMED_PARAMETERS_H
+#define CGAL_DF_L1_SKELETON_NAMED_PARAMETERS_H
+
+/// \file named_parameters.h
+/// The package's own named parameters, next to CGAL's (`point_map`, `geom_traits`,
+/// `random_seed`, `callback`...).
+///
+/// CGAL 5.5 offers no way for a package outside CGAL to add chainable member
+/// functions to `CGAL::Named_function_parameters`, so each of our parameters is a
+/// free function in `CGAL::parameters` with an optional last argument: the list
+/// to extend. Both forms build ordinary CGAL named parameters:
+/// \code
+/// namespace params = CGAL::parameters;
+/// auto np = params::voxel_resolution(64, params::point_map(pmap));
+/// auto np2 = params::thinning_coefficient(0.8, params::voxel_resolution(64));
+/// \endcode
+
+#include <CGAL/Named_function_parameters.h>
+
+namespace CGAL {
+namespace internal_np {
+enum df_l1_voxel_resolution_t { df_l1_voxel_resolution };
+enum df_l1_initial_voxel_size_t { df_l1_initial_voxel_size };
+enum df_l1_exterior_propagation_t { df_l1_exterior_propagation };
+enum df_l1_upsampling_t { df_l1_upsampling };
+enum df_l1_upsampling_neighbors_t { df_l1_upsampling_neighbors };
+enum df_l1_upsampling_radius_t { df_l1_upsampling_radius };
+enum df_l1_thinning_coefficient_t { df_l1_thinning_coefficient };
+enum df_l1_outlier_component_size_t { df_l1_outlier_component_size };
+enum df_l1_spur_length_t { df_l1_spur_length };
+} // namespace internal_np
+
+namespace parameters {
+
+#define CGAL_DF_L1_ADD_NAMED_PARAMETER(TAG, NAME)                                         \
+  template <class K>                                                                      \
+  Named_function_parameters<K, internal_np::TAG##_t> NAME(const K& k)                     \
+  {                                                                                       \
+    return Named_function_parameters<K, internal_np::TAG##_t>(k);                         \
+  }                                                                                       \
+  template <class K, class T, class Tag, class Base>                                      \
+  Named_function_parameters<K, internal_np::TAG##_t, Named_function_parameters<T, Tag, Base>> \
+  NAME(const K& k, const Named_function_parameters<T, Tag, Base>& np)                     \
+  {                                                                                       \
+    return Named_function_parameters<K, internal_np::TAG##_t,                             \
+                                     Named_function_parameters<T, Tag, Base>>(k, np);     \
+  }
+
+/// \ingroup PkgDFL1SkeletonNamedParameters
+/// V, the number of voxels along the longest side of the finest voxel grid (default 100).
+CGAL_DF_L1_ADD_NAMED_PARAMETER(df_l1_voxel_resolution, voxel_resolution)
+/// \ingroup PkgDFL1SkeletonNamedParameters
+/// s0, the voxel size of the coarsest grid before it is rounded to a power-of-3
+/// multiple of the finest voxel size (default: d_bb / 9).
+CGAL_DF_L1_ADD_NAMED_PARAMETER(df_l1_initial_voxel_size, initial_voxel_size)
+/// \ingroup PkgDFL1SkeletonNamedParameters
+/// How many 26-neighbour steps the exterior label may spread through the empty
+/// sub-voxels of a boundary voxel at each refinement level (default 1, the paper's rule).
+CGAL_DF_L1_ADD_NAMED_PARAMETER(df_l1_exterior_propagation, exterior_propagation_steps)
+/// \ingroup PkgDFL1SkeletonNamedParameters
+/// Whether sparse regions are upsampled before voxelization (default `true`).
+CGAL_DF_L1_ADD_NAMED_PARAMETER(df_l1_upsampling, upsampling)
+/// \ingroup PkgDFL1SkeletonNamedParameters
+/// k, the number of neighbours that defines the local density k / r^3 (default 5).
+CGAL_DF_L1_ADD_NAMED_PARAMETER(df_l1_upsampling_neighbors, upsampling_neighbors)
+/// \ingroup PkgDFL1SkeletonNamedParameters
+/// r, the radius of the density test (default 3 d_bb / cbrt(N)).
+CGAL_DF_L1_ADD_NAMED_PARAMETER(df_l1_upsampling_radius, upsampling_radius)
+/// \ingroup PkgDFL1SkeletonNamedParameters
+/// c, the thinning coefficient of Eq. 2 (default 0.86).
+CGAL_DF_L1_ADD_NAMED_PARAMETER(df_l1_thinning_coefficient, thinning_coefficient)
+/// \ingroup PkgDFL1SkeletonNamedParameters
+/// Occupied voxel components without interior voxels and at most this many voxels are
+/// outliers (default: derived from the grid, see `remove_outlier_voxels()`).
+CGAL_DF_L1_ADD_NAMED_PARAMETER(df_l1_outlier_component_size, outlier_component_size)
+/// \ingroup PkgDFL1SkeletonNamedParameters
+/// Terminal branches of the initial skeleton shorter than this many times the local
+/// radius at their junction are pruned (default 1).
+CGAL_DF_L1_ADD_NAMED_PARAMETER(df_l1_spur_length, spur_length_ratio)
+
+#undef CGAL_DF_L1_ADD_NAMED_PARAMETER
+
+} // namespace parameters
+} // namespace CGAL
+
+#endif // CGAL_DF_L1_SKELETON_NAMED_PARAMETERS_H
