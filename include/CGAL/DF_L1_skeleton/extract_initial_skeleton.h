@@ -263,8 +263,11 @@ void prune_spurs(Skeleton_graph<Traits>& g, double ratio, double voxel_size)
 ///     \cgalParamDefault{1}
 ///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
+/// Skeleton voxels lie at least two voxels deep: the interior voxels one voxel deep are
+/// what a flat, linear or noisy sheet of points encloses between its samples.
+///
 /// \returns the skeleton voxels and the graph; both are empty when the field has no
-///          interior voxel (a flat or linear point set, or one too sparse to enclose a volume)
+///          interior voxel two voxels deep (a flat or linear point set, or one too sparse to enclose a volume)
 template <class Traits, class NamedParameters = parameters::Default_named_parameters>
 Initial_skeleton<Traits> extract_initial_skeleton(const Distance_field<Traits>& field,
                                                   const NamedParameters& np = parameters::default_values())
@@ -309,7 +312,9 @@ Initial_skeleton<Traits> extract_initial_skeleton(const Distance_field<Traits>& 
       {
         const std::size_t v = field.index(i, j, k);
         const float dt = field.values[v];
-        if(dt <= 0)
+        // One voxel deep is what a flat, linear or noisy sheet of points encloses
+        // between its samples: no volume, no skeleton.
+        if(dt < 2)
           continue;
         bool ridge = true;
         for(int s = 0; s < 3 && ridge; ++s)

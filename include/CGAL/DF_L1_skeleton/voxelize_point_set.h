@@ -116,7 +116,11 @@ void crop(Grid_geometry<Traits>& g, std::vector<std::uint8_t>& labels, int margi
 // One refinement level: every voxel becomes 3x3x3 sub-voxels. Sub-voxels of exterior
 // and interior voxels keep their parent's label; those of a boundary voxel are boundary
 // when they hold a point, exterior when the exterior reaches them within
-// `propagation_steps` 26-neighbour steps, interior otherwise (the paper uses one step).
+// `propagation_steps` face-neighbour steps, interior otherwise (the paper: one step).
+// The paper lets the exterior spread to the 26 neighbours; but a boundary shell one
+// sub-voxel thick is often only 26-connected, and a 26-step then crosses it diagonally
+// and eats a sub-voxel of the inside (3 finest voxels at the second level). With face
+// steps, a 26-connected shell separates, as in the (26, 6) digital topology.
 template <class Traits>
 void refine(Grid_geometry<Traits>& g, std::vector<std::uint8_t>& labels,
             const std::vector<std::array<double, 3>>& xyz, int propagation_steps)
@@ -151,14 +155,11 @@ void refine(Grid_geometry<Traits>& g, std::vector<std::uint8_t>& labels,
     {
       const std::array<int, 3> c = fine.coordinates(v);
       bool near_exterior = false;
-      for(int dk = -1; dk <= 1 && !near_exterior; ++dk)
-        for(int dj = -1; dj <= 1 && !near_exterior; ++dj)
-          for(int di = -1; di <= 1 && !near_exterior; ++di)
-          {
-            const int i = c[0] + di, j = c[1] + dj, k = c[2] + dk;
-            near_exterior = !fine.contains(i, j, k) ||
-                            fl[fine.index(i, j, k)] == std::uint8_t(Voxel_label::EXTERIOR);
-          }
+      for(int n = 0; n < 6 && !near_exterior; ++n)
+      {
+        const int i = c[0] + (n == 0) - (n == 1), j = c[1] + (n == 2) - (n == 3), k = c[2] + (n == 4) - (n == 5);
+        near_exterior = !fine.contains(i, j, k) || fl[fine.index(i, j, k)] == std::uint8_t(Voxel_label::EXTERIOR);
+      }
       if(near_exterior)
         reached.push_back(v);
       else
@@ -253,8 +254,10 @@ Voxelization_level level_statistics(const Grid_geometry<Traits>& g, const std::v
 /// the rest is interior. Each level then splits every voxel into 3x3x3 sub-voxels until
 /// the longest side of the points' bounding box spans V voxels. Sub-voxels of exterior
 /// and interior voxels keep their parent's label; a sub-voxel of a boundary voxel is
-/// boundary if it holds a point, exterior if one of its 26 neighbours is exterior, and
-/// interior otherwise.
+/// boundary if it holds a point, exterior if one of its neighbours is exterior, and
+/// interior otherwise. Neighbours are the 6 face neighbours, not the paper's 26: a boundary
+/// shell one voxel thick is often only 26-connected, and the exterior would cross it
+/// diagonally at every level (the (26, 6) pair of digital topology).
 ///
 /// Two choices differ from a literal reading of the paper:
 /// - s0 is rounded down to a power-of-3 multiple of the finest voxel size (longest bbox
@@ -269,7 +272,7 @@ Voxelization_level level_statistics(const Grid_geometry<Traits>& g, const std::v
 ///   exterior. The ball cannot pass through a gap of the scan narrower than s0', which
 ///   is exactly the size of hole the coarse level was there to close, so the hole
 ///   tolerance of the method is unchanged. `exterior_propagation_steps` also lets the
-///   exterior spread more than the paper's single 26-neighbour step inside boundary
+///   exterior spread more than the paper's single neighbour step inside boundary
 ///   voxels at each level (default 1, the paper's rule).
 ///
 /// The returned grid is cropped to the occupied voxels plus a margin of 4 exterior
@@ -299,7 +302,7 @@ Voxelization_level level_statistics(const Grid_geometry<Traits>& g, const std::v
 ///     \cgalParamDefault{d_bb / 9}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{exterior_propagation_steps}
-///     \cgalParamDescription{26-neighbour steps of the exterior inside boundary voxels per level, in [1, 27]}
+///     \cgalParamDescription{neighbour steps of the exterior inside boundary voxels per level, in [1, 27]}
 ///     \cgalParamDefault{1}
 ///   \cgalParamNEnd
 /// \cgalNamedParamsEnd

@@ -22,8 +22,8 @@
 /// - Normals are optional: if any normal component is NaN or infinite, all
 ///   normals of the file are dropped (`Point_cloud::normals` is empty) and the
 ///   points are still returned.
-/// - Windows ("\r\n") and old Mac ("\r") line ends and a UTF-8 byte-order mark
-///   are accepted in text data.
+/// - Windows (CR LF) and old Mac (lone CR) line ends and a UTF-8 byte-order
+///   mark are accepted in text data.
 
 #include <CGAL/DF_L1_skeleton/errors.h>
 #include <CGAL/DF_L1_skeleton/IO/internal/read_point_cloud_impl.h>
@@ -55,19 +55,6 @@ struct Point_cloud
 
 namespace internal {
 namespace point_cloud_reader {
-
-template <class Kernel>
-Point_cloud<Kernel> to_point_cloud(const Raw_point_cloud& raw)
-{
-  Point_cloud<Kernel> pc;
-  pc.points.reserve(raw.points.size());
-  for(const auto& p : raw.points)
-    pc.points.emplace_back(p[0], p[1], p[2]);
-  pc.normals.reserve(raw.normals.size());
-  for(const auto& n : raw.normals)
-    pc.normals.emplace_back(n[0], n[1], n[2]);
-  return pc;
-}
 
 /// The file name's extension in lower case, including the dot ("" if none).
 inline std::string lower_case_extension(const std::string& filename)
@@ -143,7 +130,9 @@ Point_cloud<Kernel> read_xyz_point_cloud(std::istream& in, const std::string& na
 {
   namespace reader = internal::point_cloud_reader;
   const std::string data = reader::read_stream(in, name_for_messages);
-  return reader::to_point_cloud<Kernel>(reader::parse_xyz(data, name_for_messages));
+  Point_cloud<Kernel> pc;
+  reader::parse_xyz(data, name_for_messages, pc);
+  return pc;
 }
 
 /// \ingroup PkgDFL1SkeletonRef
@@ -158,7 +147,7 @@ Point_cloud<Kernel> read_xyz_point_cloud(std::istream& in, const std::string& na
 ///   are skipped.
 /// - Other elements (faces, edges...) are skipped; those stored before the
 ///   vertices are walked through (list lengths included), those after are not read.
-/// - `comment` and `obj_info` lines are ignored; header lines may end in "\r\n".
+/// - `comment` and `obj_info` lines are ignored; header lines may end in CR LF.
 /// - In ASCII data each element instance must be on its own line, as all
 ///   writers do; a vertex line with too few or too many values is an error.
 /// - A missing `end_header` or `format` line, an unknown format or type, a
@@ -176,7 +165,9 @@ Point_cloud<Kernel> read_ply_point_cloud(std::istream& in, const std::string& na
 {
   namespace reader = internal::point_cloud_reader;
   const std::string data = reader::read_stream(in, name_for_messages);
-  return reader::to_point_cloud<Kernel>(reader::parse_ply(data, name_for_messages));
+  Point_cloud<Kernel> pc;
+  reader::parse_ply(data, name_for_messages, pc);
+  return pc;
 }
 
 /// \ingroup PkgDFL1SkeletonRef
@@ -207,7 +198,9 @@ Point_cloud<Kernel> read_off_point_cloud(std::istream& in, const std::string& na
 {
   namespace reader = internal::point_cloud_reader;
   const std::string data = reader::read_stream(in, name_for_messages);
-  return reader::to_point_cloud<Kernel>(reader::parse_off(data, name_for_messages));
+  Point_cloud<Kernel> pc;
+  reader::parse_off(data, name_for_messages, pc);
+  return pc;
 }
 
 /// \ingroup PkgDFL1SkeletonRef
@@ -227,19 +220,20 @@ Point_cloud<Kernel> read_point_cloud(const std::string& filename)
 {
   namespace reader = internal::point_cloud_reader;
   const std::string ext = reader::lower_case_extension(filename);
-  reader::Raw_point_cloud (*parse)(std::string_view, const std::string&) = nullptr;
-  if(ext == ".xyz" || ext == ".pts" || ext == ".txt")
-    parse = &reader::parse_xyz;
-  else if(ext == ".ply")
-    parse = &reader::parse_ply;
-  else if(ext == ".off")
-    parse = &reader::parse_off;
-  else
+  const bool is_xyz = ext == ".xyz" || ext == ".pts" || ext == ".txt";
+  if(!is_xyz && ext != ".ply" && ext != ".off")
     reader::fail(filename, "",
                  "unsupported file extension " + reader::quote_token(ext) +
                      " (expected .xyz, .pts, .txt, .ply or .off)");
   const std::string data = reader::read_file(filename);
-  return reader::to_point_cloud<Kernel>(parse(data, filename));
+  Point_cloud<Kernel> pc;
+  if(is_xyz)
+    reader::parse_xyz(data, filename, pc);
+  else if(ext == ".ply")
+    reader::parse_ply(data, filename, pc);
+  else
+    reader::parse_off(data, filename, pc);
+  return pc;
 }
 
 } // namespace DF_L1

@@ -84,12 +84,13 @@ inline std::filesystem::path checked_destination(const std::string& path)
   fs::path dest(path);
   std::error_code ec;
 
-  // Write through a symbolic link rather than replacing the link itself.
-  if(fs::is_symlink(dest, ec)) {
-    fs::path target = fs::read_symlink(dest, ec);
-    if(!ec) {
-      dest = target.is_absolute() ? target : dest.parent_path() / target;
-    }
+  // Write through symbolic links rather than replacing the link itself (the
+  // bound stops on link cycles, which then fail below or at opening).
+  for(int depth = 0; depth < 40 && fs::is_symlink(dest, ec); ++depth) {
+    const fs::path target = fs::read_symlink(dest, ec);
+    if(ec)
+      break;
+    dest = target.is_absolute() ? target : dest.parent_path() / target;
   }
 
   if(!dest.has_filename())
@@ -157,17 +158,17 @@ void write_file_atomically(const std::string& path, F&& write_content, bool bina
   if(binary)
     mode |= std::ios_base::binary;
 
+  // Declared before the stream so that the stream is closed before the file is
+  // removed (an open file cannot be removed on Windows).
+  Temporary_file_guard guard(tmp);
   errno = 0;
   std::ofstream os(tmp, mode);
   if(!os) {
-    const int err = errno;
-    std::error_code ec;
-    fs::remove(tmp, ec); // in case it was created but could not be opened for writing
+    const int err = errno; // before anything else can change it
     throw Write_error("cannot write '" + path + "': cannot create a file in '" +
                       tmp.parent_path().string() + "': " +
                       errno_reason(err, "cannot open file for writing"));
   }
-  Temporary_file_guard guard(tmp);
   os.imbue(std::locale::classic());
 
   write_content(static_cast<std::ostream&>(os));
@@ -176,14 +177,16 @@ void write_file_atomically(const std::string& path, F&& write_content, bool bina
   if(os)
     os.flush();
   if(!os) {
+    const int err = errno;
     throw Write_error("cannot write '" + path + "': writing failed: " +
-                      errno_reason(errno, "output error (disk full?)"));
+                      errno_reason(err, "output error (disk full?)"));
   }
   errno = 0;
   os.close();
   if(os.fail()) {
+    const int err = errno;
     throw Write_error("cannot write '" + path + "': closing the file failed: " +
-                      errno_reason(errno, "output error (disk full?)"));
+                      errno_reason(err, "output error (disk full?)"));
   }
 
   std::error_code ec;

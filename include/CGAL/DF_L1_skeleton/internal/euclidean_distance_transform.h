@@ -97,7 +97,7 @@ void for_each_row(std::size_t rows, const Function& f)
 template <class ConcurrencyTag>
 void squared_euclidean_distance_transform(std::vector<float>& grid, const std::array<int, 3>& dims)
 {
-  const std::size_t nx = dims[0], ny = dims[1], nz = dims[2];
+  const std::size_t nx = dims[0], ny = dims[1];
   const std::size_t strides[3] = {1, nx, nx * ny};
   for(int axis = 0; axis < 3; ++axis)
   {

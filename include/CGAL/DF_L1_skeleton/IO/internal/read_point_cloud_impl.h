@@ -4,10 +4,12 @@
 #define CGAL_DF_L1_SKELETON_IO_INTERNAL_READ_POINT_CLOUD_IMPL_H
 
 /// \file read_point_cloud_impl.h
-/// Kernel-independent parsers behind `read_point_cloud.h`. Each parser works on
-/// the whole file held in memory (one read, no per-token stream extraction) and
-/// produces plain `double` triples; the public functions convert them to the
-/// kernel's types. Not part of the public API.
+/// The parsers behind `read_point_cloud.h`. Each one works on the whole file
+/// held in memory (one read, no per-token stream extraction) and appends to the
+/// `points` and `normals` vectors of a `Cloud` (in practice
+/// `CGAL::DF_L1::Point_cloud<Kernel>`), whose value types are constructible from
+/// three `double`s. Filling the caller's vectors directly, rather than an
+/// intermediate array, halves the memory touched. Not part of the public API.
 
 #include <CGAL/DF_L1_skeleton/errors.h>
 
@@ -42,12 +44,12 @@ namespace internal {
 // must not collide with other internal headers of the package.
 namespace point_cloud_reader {
 
-/// Points and (possibly empty) normals as read from a file.
-struct Raw_point_cloud
+/// Appends a point or vector made of `c` to `v`.
+template <class Vector>
+void append(Vector& v, const std::array<double, 3>& c)
 {
-  std::vector<std::array<double, 3>> points;
-  std::vector<std::array<double, 3>> normals;
-};
+  v.emplace_back(c[0], c[1], c[2]);
+}
 
 // ---------------------------------------------------------------------------
 // Error messages
@@ -92,6 +94,13 @@ inline std::string format_value(double v)
   char text[32];
   std::snprintf(text, sizeof text, "%.17g", v);
   return text;
+}
+
+/// The message for data that ends before the announced vertex count.
+inline std::string truncated_vertices(std::uint64_t announced, std::uint64_t read)
+{
+  return "header says " + std::to_string(announced) + " vertices but the file ends after " +
+         std::to_string(read);
 }
 
 inline std::string line_where(std::size_t line) { return "line " + std::to_string(line); }
@@ -164,22 +173,25 @@ public:
       return false;
     const char* const begin = buf_.data() + pos_;
     const char* const end = buf_.data() + buf_.size();
-    const char* p = begin;
-    if(lone_cr_) {
-      while(p != end && *p != '\n' && *p != '\r')
-        ++p;
-    } else {
-      p = static_cast<const char*>(std::memchr(begin, '\n', static_cast<std::size_t>(end - begin)));
-      if(p == nullptr)
-        p = end;
+    // memchr is much faster than a byte loop on large files. The next "\n" is
+    // remembered: in a file of lone-"\r" lines it serves many lines.
+    if(newline_ == nullptr || newline_ < begin) {
+      newline_ = static_cast<const char*>(std::memchr(begin, '\n', static_cast<std::size_t>(end - begin)));
+      if(newline_ == nullptr)
+        newline_ = end;
     }
+    const char* const p = newline_;
     std::size_t len = static_cast<std::size_t>(p - begin);
-    std::size_t consumed = len;
-    if(p != end) {
-      consumed += (*p == '\r' && p + 1 != end && p[1] == '\n') ? 2 : 1;
+    std::size_t consumed = len + (p != end ? 1 : 0);
+    if(len > 0 && begin[len - 1] == '\r')
+      --len; // "\r\n"
+    if(lone_cr_) {
+      const void* cr = std::memchr(begin, '\r', len);
+      if(cr != nullptr) { // the line ends at a lone "\r"
+        len = static_cast<std::size_t>(static_cast<const char*>(cr) - begin);
+        consumed = len + 1;
+      }
     }
-    if(!lone_cr_ && len > 0 && begin[len - 1] == '\r')
-      --len;
     line = std::string_view(begin, len);
     pos_ += consumed;
     current_line_ = next_line_++;
@@ -197,6 +209,7 @@ private:
   std::size_t next_line_;
   std::size_t current_line_ = 0;
   bool lone_cr_;
+  const char* newline_ = nullptr; // next '\n' at or after pos_, or the end
 };
 
 /// Whitespace-separated tokens of one line.
@@ -254,13 +267,17 @@ inline std::size_t skip_bom(std::string_view buf)
   return (buf.size() >= 3 && buf.compare(0, 3, "\xEF\xBB\xBF") == 0) ? 3 : 0;
 }
 
-/// Line ends from `start` on; bounds a reservation by what the file can hold.
-inline std::size_t count_lines_from(std::string_view buf, std::size_t start)
+/// An upper bound on the number of points the text from `start` on can hold,
+/// to size reservations: one per line, and no more than one per 6 bytes (the
+/// shortest point line is "1 2 3\n"), so blank lines cannot inflate it.
+inline std::size_t max_text_points(std::string_view buf, std::size_t start)
 {
   if(start >= buf.size())
     return 0;
-  return static_cast<std::size_t>(std::count(buf.begin() + static_cast<std::ptrdiff_t>(start),
-                                             buf.end(), '\n')) + 1;
+  const std::size_t lines =
+      static_cast<std::size_t>(std::count(buf.begin() + static_cast<std::ptrdiff_t>(start),
+                                          buf.end(), '\n')) + 1;
+  return std::min(lines, (buf.size() - start + 1) / 6 + 1);
 }
 
 /// Capacity to reserve for a count announced by a header: never more than the
@@ -471,11 +488,11 @@ inline Number_status parse_normal(const std::string_view* tok, std::array<double
 // XYZ / PTS / TXT
 // ---------------------------------------------------------------------------
 
-inline Raw_point_cloud parse_xyz(std::string_view buf, const std::string& name)
+template <class Cloud>
+void parse_xyz(std::string_view buf, const std::string& name, Cloud& out)
 {
-  Raw_point_cloud out;
   const std::size_t start = skip_bom(buf);
-  out.points.reserve(count_lines_from(buf, start));
+  out.points.reserve(max_text_points(buf, start));
   Line_reader lines(buf, start, 1, true);
 
   bool first_content_line = true;
@@ -499,7 +516,7 @@ inline Raw_point_cloud parse_xyz(std::string_view buf, const std::string& name)
     const auto where = [&lines] { return line_where(lines.line_number()); };
     if(t.size < 3)
       fail_short_line(t.tok.data(), t.size, name, where(), "at least 3 numbers (x y z)");
-    out.points.push_back(parse_coordinates(t.tok.data(), name, where));
+    append(out.points, parse_coordinates(t.tok.data(), name, where));
 
     if(!six_columns_everywhere)
       continue;
@@ -521,7 +538,7 @@ inline Raw_point_cloud parse_xyz(std::string_view buf, const std::string& name)
     normals_finite = normals_finite && finite;
     if(out.normals.empty())
       out.normals.reserve(out.points.capacity());
-    out.normals.push_back(n);
+    append(out.normals, n);
   }
 
   if(out.points.empty())
@@ -530,7 +547,6 @@ inline Raw_point_cloud parse_xyz(std::string_view buf, const std::string& name)
     fail(name, "", deferred_error);
   if(!six_columns_everywhere || !normals_finite)
     out.normals.clear();
-  return out;
 }
 
 // ---------------------------------------------------------------------------
@@ -550,7 +566,8 @@ inline bool next_content_line(Line_reader& lines, std::string_view& content)
   return false;
 }
 
-inline Raw_point_cloud parse_off(std::string_view buf, const std::string& name)
+template <class Cloud>
+void parse_off(std::string_view buf, const std::string& name, Cloud& out)
 {
   const std::size_t start = skip_bom(buf);
   Line_reader lines(buf, start, 1, true);
@@ -633,17 +650,14 @@ inline Raw_point_cloud parse_off(std::string_view buf, const std::string& name)
   if(n == 0)
     fail(name, counts_where, "no points (the header says 0 vertices)");
 
-  Raw_point_cloud out;
-  out.points.reserve(capped_reserve(n, count_lines_from(buf, lines.position())));
+  out.points.reserve(capped_reserve(n, max_text_points(buf, lines.position())));
   if(has_normals)
     out.normals.reserve(out.points.capacity());
   bool normals_finite = true;
 
   for(std::uint64_t i = 0; i < n; ++i) {
     if(!next_content_line(lines, line))
-      fail(name, "",
-           "header says " + std::to_string(n) + " vertices but the file ends after " +
-               std::to_string(i));
+      fail(name, "", truncated_vertices(n, i));
     const auto where = [&] {
       return vertex_where(static_cast<std::size_t>(i), n, lines.line_number());
     };
@@ -654,7 +668,7 @@ inline Raw_point_cloud parse_off(std::string_view buf, const std::string& name)
       fail(name, where(),
            "expected 6 numbers (x y z nx ny nz) since the keyword is " + quote_token(keyword) +
                ", got " + std::to_string(t.size));
-    out.points.push_back(parse_coordinates(t.tok.data(), name, where));
+    append(out.points, parse_coordinates(t.tok.data(), name, where));
     if(has_normals) {
       std::array<double, 3> nv;
       bool finite;
@@ -663,13 +677,12 @@ inline Raw_point_cloud parse_off(std::string_view buf, const std::string& name)
       if(st != Number_status::ok)
         fail(name, where(), number_error(t.tok[3 + bad], st));
       normals_finite = normals_finite && finite;
-      out.normals.push_back(nv);
+      append(out.normals, nv);
     }
   }
   // Faces and anything after them are not read.
   if(!normals_finite)
     out.normals.clear();
-  return out;
 }
 
 // ---------------------------------------------------------------------------
@@ -946,9 +959,10 @@ inline Ply_walk ply_walk_binary(Ply_binary_cursor& c, const Ply_element& e, cons
   return Ply_walk::ok;
 }
 
-inline Raw_point_cloud parse_ply_binary(std::string_view buf, const Ply_header& h,
-                                        std::size_t vertex_index, const std::vector<int>& roles,
-                                        bool has_normals, const std::string& name)
+template <class Cloud>
+void parse_ply_binary(std::string_view buf, const Ply_header& h, std::size_t vertex_index,
+                      const std::vector<int>& roles, bool has_normals, const std::string& name,
+                      Cloud& out)
 {
   const bool file_little = h.format == Ply_format::binary_little_endian;
   Ply_binary_cursor c(buf, h.data_offset, file_little != host_is_little_endian());
@@ -989,7 +1003,6 @@ inline Raw_point_cloud parse_ply_binary(std::string_view buf, const Ply_header& 
   std::uint64_t min_size = 0;
   for(const Ply_property& p : v.properties)
     min_size += ply_type_size(p.is_list ? p.count_type : p.type);
-  Raw_point_cloud out;
   out.points.reserve(capped_reserve(v.count, c.remaining() / std::max<std::uint64_t>(min_size, 1)));
   if(has_normals)
     out.normals.reserve(out.points.capacity());
@@ -1001,29 +1014,27 @@ inline Raw_point_cloud parse_ply_binary(std::string_view buf, const Ply_header& 
     const Ply_walk w = ply_walk_binary(c, v, roles.data(), values, &bad_list);
     const auto where = [&] { return vertex_where(static_cast<std::size_t>(i), v.count, 0); };
     if(w == Ply_walk::truncated)
-      fail(name, where(),
-           "unexpected end of file (header says " + std::to_string(v.count) +
-               " vertices, the data ends after " + std::to_string(i) + ")");
+      fail(name, where(), truncated_vertices(v.count, i));
     if(w == Ply_walk::bad_list_count)
       fail(name, where(), bad_list);
     for(int r = 0; r < 3; ++r)
       if(!std::isfinite(values[r]))
         fail(name, where(), "coordinate is not finite (" + format_value(values[r]) + ")");
-    out.points.push_back({values[0], values[1], values[2]});
+    out.points.emplace_back(values[0], values[1], values[2]);
     if(has_normals) {
       normals_finite = normals_finite && std::isfinite(values[3]) && std::isfinite(values[4]) &&
                        std::isfinite(values[5]);
-      out.normals.push_back({values[3], values[4], values[5]});
+      out.normals.emplace_back(values[3], values[4], values[5]);
     }
   }
   if(!normals_finite)
     out.normals.clear();
-  return out;
 }
 
-inline Raw_point_cloud parse_ply_ascii(std::string_view buf, const Ply_header& h,
-                                       std::size_t vertex_index, const std::vector<int>& roles,
-                                       bool has_normals, const std::string& name)
+template <class Cloud>
+void parse_ply_ascii(std::string_view buf, const Ply_header& h, std::size_t vertex_index,
+                     const std::vector<int>& roles, bool has_normals, const std::string& name,
+                     Cloud& out)
 {
   // One element instance per line, as every writer does; this lets a line with
   // too many or too few values be reported instead of shifting all that follows.
@@ -1047,8 +1058,7 @@ inline Raw_point_cloud parse_ply_ascii(std::string_view buf, const Ply_header& h
   }
 
   const Ply_element& v = h.elements[vertex_index];
-  Raw_point_cloud out;
-  out.points.reserve(capped_reserve(v.count, count_lines_from(buf, lines.position())));
+  out.points.reserve(capped_reserve(v.count, max_text_points(buf, lines.position())));
   if(has_normals)
     out.normals.reserve(out.points.capacity());
   bool normals_finite = true;
@@ -1056,8 +1066,7 @@ inline Raw_point_cloud parse_ply_ascii(std::string_view buf, const Ply_header& h
   for(std::uint64_t i = 0; i < v.count; ++i) {
     if(!next_nonblank(line))
       fail(name, vertex_where(static_cast<std::size_t>(i), v.count, 0),
-           "unexpected end of file (header says " + std::to_string(v.count) +
-               " vertices, the data ends after " + std::to_string(i) + ")");
+           truncated_vertices(v.count, i));
     const auto where = [&] {
       return vertex_where(static_cast<std::size_t>(i), v.count, lines.line_number());
     };
@@ -1091,19 +1100,19 @@ inline Raw_point_cloud parse_ply_ascii(std::string_view buf, const Ply_header& h
     for(int r = 0; r < 3; ++r)
       if(!std::isfinite(values[r]))
         fail(name, where(), "coordinate is not finite: " + quote_token(tokens[r]));
-    out.points.push_back({values[0], values[1], values[2]});
+    out.points.emplace_back(values[0], values[1], values[2]);
     if(has_normals) {
       normals_finite = normals_finite && std::isfinite(values[3]) && std::isfinite(values[4]) &&
                        std::isfinite(values[5]);
-      out.normals.push_back({values[3], values[4], values[5]});
+      out.normals.emplace_back(values[3], values[4], values[5]);
     }
   }
   if(!normals_finite)
     out.normals.clear();
-  return out;
 }
 
-inline Raw_point_cloud parse_ply(std::string_view buf, const std::string& name)
+template <class Cloud>
+void parse_ply(std::string_view buf, const std::string& name, Cloud& out)
 {
   const Ply_header h = parse_ply_header(buf, name);
   std::size_t vertex_index = h.elements.size();
@@ -1121,8 +1130,9 @@ inline Raw_point_cloud parse_ply(std::string_view buf, const std::string& name)
   if(h.elements[vertex_index].count == 0)
     fail(name, "", "no points (the header says 0 vertices)");
   if(h.format == Ply_format::ascii)
-    return parse_ply_ascii(buf, h, vertex_index, roles, has_normals, name);
-  return parse_ply_binary(buf, h, vertex_index, roles, has_normals, name);
+    parse_ply_ascii(buf, h, vertex_index, roles, has_normals, name, out);
+  else
+    parse_ply_binary(buf, h, vertex_index, roles, has_normals, name, out);
 }
 
 } // namespace point_cloud_reader

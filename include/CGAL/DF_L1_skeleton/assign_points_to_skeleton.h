@@ -1,0 +1,79 @@
+// Copyright (c) 2026 DF_L1_skeleton contributors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+#ifndef CGAL_DF_L1_SKELETON_ASSIGN_POINTS_TO_SKELETON_H
+#define CGAL_DF_L1_SKELETON_ASSIGN_POINTS_TO_SKELETON_H
+
+/// \file assign_points_to_skeleton.h
+/// Fills `Skeleton_vertex::points`: which input points each skeleton vertex stands for.
+
+#include <CGAL/DF_L1_skeleton/Skeleton_graph.h>
+#include <CGAL/DF_L1_skeleton/errors.h>
+
+#include <CGAL/Orthogonal_k_neighbor_search.h>
+#include <CGAL/Search_traits_3.h>
+#include <CGAL/Search_traits_adapter.h>
+#include <CGAL/property_map.h>
+
+#include <cstddef>
+#include <vector>
+
+namespace CGAL {
+namespace DF_L1 {
+
+/// \ingroup PkgDFL1SkeletonRef
+/// Assigns every input point that is not an outlier to its nearest skeleton vertex
+/// (ties go to the lower vertex index), replacing the vertices' `points` lists. Each
+/// non-outlier point then belongs to exactly one vertex.
+/// \tparam PointRange a random-access range of `Traits::Point_3`
+/// \param points the input points
+/// \param is_outlier one flag per point (may be empty: no outliers)
+/// \param skeleton the skeleton whose `points` members are filled
+/// \throws Invalid_input if `is_outlier` is neither empty nor of the size of `points`
+template <class PointRange, class Traits>
+void assign_points_to_skeleton(const PointRange& points, const std::vector<bool>& is_outlier,
+                               Skeleton_graph<Traits>& skeleton)
+{
+  typedef typename Traits::Point_3 Point_3;
+  typedef CGAL::Search_traits_3<Traits> Base_traits;
+  typedef std::vector<Point_3> Vertex_points;
+  typedef typename CGAL::Pointer_property_map<Point_3>::const_type Vertex_point_map; // read-only
+  typedef CGAL::Search_traits_adapter<std::size_t, Vertex_point_map, Base_traits> Search_traits;
+  typedef CGAL::Orthogonal_k_neighbor_search<Search_traits> Search;
+  typedef typename Search::Tree Tree;
+  typedef typename Search::Distance Distance;
+
+  const std::size_t n = std::size_t(std::distance(points.begin(), points.end()));
+  if(!is_outlier.empty() && is_outlier.size() != n)
+    throw Invalid_input("assign_points_to_skeleton: one outlier flag per point expected");
+  const std::size_t nv = boost::num_vertices(skeleton);
+  for(std::size_t v = 0; v < nv; ++v)
+    skeleton[v].points.clear();
+  if(nv == 0)
+    return;
+
+  Vertex_points vertex_points(nv);
+  for(std::size_t v = 0; v < nv; ++v)
+    vertex_points[v] = skeleton[v].point;
+  const Vertex_point_map vpm(&vertex_points[0]);
+  std::vector<std::size_t> ids(nv);
+  for(std::size_t v = 0; v < nv; ++v)
+    ids[v] = v;
+  Tree tree(ids.begin(), ids.end(), typename Tree::Splitter(), Search_traits(vpm));
+  tree.build();
+  const Distance distance(vpm);
+  std::size_t i = 0;
+  for(const Point_3& p : points)
+  {
+    if(is_outlier.empty() || !is_outlier[i])
+    {
+      Search search(tree, p, 1, 0, true, distance);
+      skeleton[search.begin()->first].points.push_back(i);
+    }
+    ++i;
+  }
+}
+
+} // namespace DF_L1
+} // namespace CGAL
+
+#endif // CGAL_DF_L1_SKELETON_ASSIGN_POINTS_TO_SKELETON_H

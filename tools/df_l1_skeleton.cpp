@@ -1,0 +1,468 @@
+// Copyright (c) 2026 DF_L1_skeleton contributors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// df_l1_skeleton: the command-line front end of the package.
+// Exit status: 0 success, 1 bad input or failed output, 2 bad usage.
+
+#include "options.h"
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/DF_L1_skeleton/IO/read_point_cloud.h>
+#include <CGAL/DF_L1_skeleton/IO/write_skeleton.h>
+#include <CGAL/DF_L1_skeleton/IO/write_svg_preview.h>
+#include <CGAL/DF_L1_skeleton/assign_points_to_skeleton.h>
+#include <CGAL/DF_L1_skeleton/distance_field.h>
+#include <CGAL/DF_L1_skeleton/extract_initial_skeleton.h>
+#include <CGAL/DF_L1_skeleton/flag_sparse_outliers.h>
+#include <CGAL/DF_L1_skeleton/internal/atomic_file.h>
+#include <CGAL/DF_L1_skeleton/remove_outlier_voxels.h>
+#include <CGAL/DF_L1_skeleton/skeleton_statistics.h>
+#include <CGAL/DF_L1_skeleton/upsample_sparse_regions.h>
+#include <CGAL/DF_L1_skeleton/voxelize_point_set.h>
+
+#include <tbb/global_control.h>
+
+#include <sys/resource.h>
+
+#include <chrono>
+#include <cmath>
+#include <iomanip>
+#include <iostream>
+#include <memory>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace {
+
+typedef CGAL::Exact_predicates_inexact_constructions_kernel Kernel;
+typedef Kernel::Point_3 Point_3;
+namespace DF = CGAL::DF_L1;
+namespace params = CGAL::parameters;
+using df_l1_tool::Usage_error;
+
+const char* const STAGES[] = {"voxels", "distance", "initial"};
+
+struct Settings
+{
+  std::string input, output, report, preview, stage = "initial";
+  int threads = 0; // 0: all cores
+  long seed = 0;
+  bool quiet = false;
+  // Library parameters; NaN / -1 mean "derive from the input".
+  int voxel_resolution = 100;
+  double initial_voxel_size = NAN;
+  int exterior_propagation_steps = 1;
+  bool upsampling = true;
+  int upsampling_neighbors = 5;
+  double upsampling_radius = NAN;
+  int outlier_component_size = -1;
+  double thinning_coefficient = 0.86;
+  double spur_length_ratio = 1.0;
+};
+
+double peak_memory_mib()
+{
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return usage.ru_maxrss / 1024.0; // kilobytes on Linux
+}
+
+// A JSON object written in insertion order, numbers with round-trip precision.
+class Json_object
+{
+public:
+  Json_object& number(const std::string& key, double x)
+  {
+    std::ostringstream s;
+    if(std::isfinite(x))
+      s << std::setprecision(15) << x;
+    else
+      s << "null";
+    return raw(key, s.str());
+  }
+  Json_object& text(const std::string& key, const std::string& value)
+  {
+    std::string quoted = "\"";
+    for(char c : value)
+    {
+      if(c == '"' || c == '\\')
+        quoted += '\\';
+      if(static_cast<unsigned char>(c) < 0x20)
+        c = ' ';
+      quoted += c;
+    }
+    return raw(key, quoted + "\"");
+  }
+  Json_object& boolean(const std::string& key, bool b) { return raw(key, b ? "true" : "false"); }
+  Json_object& object(const std::string& key, const Json_object& o) { return raw(key, o.str("  ")); }
+  Json_object& raw(const std::string& key, const std::string& value)
+  {
+    entries_.emplace_back(key, value);
+    return *this;
+  }
+  std::string str(const std::string& indent = "") const
+  {
+    std::string s = "{";
+    for(std::size_t i = 0; i < entries_.size(); ++i)
+      s += (i ? ",\n" : "\n") + indent + "  \"" + entries_[i].first + "\": " + entries_[i].second;
+    return s + "\n" + indent + "}";
+  }
+
+private:
+  std::vector<std::pair<std::string, std::string>> entries_;
+};
+
+class Stage_clock
+{
+public:
+  explicit Stage_clock(bool quiet) : quiet_(quiet) {}
+  template <class F>
+  auto run(const std::string& name, F&& f)
+  {
+    if(!quiet_)
+      std::cerr << "df_l1_skeleton: " << name << "..." << std::flush;
+    const auto start = std::chrono::steady_clock::now();
+    auto result = f();
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    times_.number(name, seconds);
+    if(!quiet_)
+      std::cerr << " " << std::fixed << std::setprecision(3) << seconds << " s\n" << std::defaultfloat;
+    return result;
+  }
+  const Json_object& times() const { return times_; }
+
+private:
+  bool quiet_;
+  Json_object times_;
+};
+
+std::vector<df_l1_tool::Option> option_table(Settings& s, bool& help, bool& version)
+{
+  using df_l1_tool::parse_integer;
+  using df_l1_tool::parse_number;
+  return {
+    {"stage", "STAGE", "initial", "stop after this stage: voxels, distance or initial",
+     [&](const std::string& v) {
+       if(v != "voxels" && v != "distance" && v != "initial")
+         throw Usage_error("--stage must be voxels, distance or initial, got '" + v + "'");
+       s.stage = v;
+     }},
+    {"report", "FILE.json", "none", "write the parameters used, timings and counts as JSON",
+     [&](const std::string& v) { s.report = v; }},
+    {"preview", "FILE.svg", "none", "write front, side and top views of the points and the skeleton",
+     [&](const std::string& v) { s.preview = v; }},
+    {"threads", "N", "all cores", "number of threads",
+     [&](const std::string& v) { s.threads = int(parse_integer("threads", v, 1, 1024)); }},
+    {"seed", "S", "0", "random seed (the current stages are deterministic and draw no random numbers)",
+     [&](const std::string& v) { s.seed = parse_integer("seed", v, 0, 2147483647L); }},
+    {"quiet", "", "off", "no progress on stderr", [&](const std::string&) { s.quiet = true; }},
+    {"voxel-resolution", "V", "100", "voxels along the longest side of the bounding box, in [3, 2048]",
+     [&](const std::string& v) { s.voxel_resolution = int(parse_integer("voxel-resolution", v, 3, 2048)); }},
+    {"initial-voxel-size", "S0", "d_bb/9", "size of the coarsest voxels (input units), rounded down to V-grid",
+     [&](const std::string& v) {
+       s.initial_voxel_size = parse_number("initial-voxel-size", v);
+       if(!(s.initial_voxel_size > 0))
+         throw Usage_error("--initial-voxel-size must be positive");
+     }},
+    {"exterior-propagation-steps", "N", "1", "26-neighbour steps of the exterior per refinement level, in [1, 27]",
+     [&](const std::string& v) {
+       s.exterior_propagation_steps = int(parse_integer("exterior-propagation-steps", v, 1, 27));
+     }},
+    {"no-upsampling", "", "upsampling on", "do not upsample sparse regions",
+     [&](const std::string&) { s.upsampling = false; }},
+    {"upsampling-neighbors", "K", "5", "k of the density k/r^3 of the sparse-region test, in [1, 64]",
+     [&](const std::string& v) { s.upsampling_neighbors = int(parse_integer("upsampling-neighbors", v, 1, 64)); }},
+    {"upsampling-radius", "R", "3*d_bb/cbrt(N)", "r of the sparse-region test (input units)",
+     [&](const std::string& v) {
+       s.upsampling_radius = parse_number("upsampling-radius", v);
+       if(!(s.upsampling_radius > 0))
+         throw Usage_error("--upsampling-radius must be positive");
+     }},
+    {"outlier-component-size", "N", "max(3, V/10)", "largest extent in voxels of a removable outlier cluster",
+     [&](const std::string& v) {
+       s.outlier_component_size = int(parse_integer("outlier-component-size", v, 0, 1 << 20));
+     }},
+    {"thinning-coefficient", "C", "0.86", "c of the thinning thresholds TP_k, in (0, 10]",
+     [&](const std::string& v) {
+       s.thinning_coefficient = parse_number("thinning-coefficient", v);
+       if(!(s.thinning_coefficient > 0 && s.thinning_coefficient <= 10))
+         throw Usage_error("--thinning-coefficient must be in (0, 10]");
+     }},
+    {"spur-length-ratio", "X", "1", "prune initial-skeleton spurs shorter than X times the local radius",
+     [&](const std::string& v) {
+       s.spur_length_ratio = parse_number("spur-length-ratio", v);
+       if(!(s.spur_length_ratio >= 0))
+         throw Usage_error("--spur-length-ratio must not be negative");
+     }},
+    {"help", "", "", "show this help", [&](const std::string&) { help = true; }},
+    {"version", "", "", "show the version", [&](const std::string&) { version = true; }},
+  };
+}
+
+void print_help(const std::vector<df_l1_tool::Option>& table)
+{
+  std::cout << "usage: df_l1_skeleton [INPUT] [OUTPUT] [options]\n\n"
+               "Extracts the curve skeleton of a point cloud (distance-field guided L1-median).\n\n"
+               "INPUT   .xyz .pts .txt (x y z [nx ny nz ...]), .ply (ascii or binary), .off;\n"
+               "        default: the bundled example " DF_L1_DEFAULT_INPUT "\n"
+               "OUTPUT  by extension: .obj (v/l lines), .ply (vertex x y z radius, edge),\n"
+               "        .polylines.txt (one 'n x1 y1 z1 ...' line per branch); default skeleton.obj.\n"
+               "        With --stage voxels or distance: a .ply of the voxel centres with their\n"
+               "        label (0 exterior, 1 boundary, 2 interior, 3 outlier; exterior voxels are\n"
+               "        omitted) and distance (input units; -1 when not computed); default voxels.ply.\n\n"
+               "options:\n";
+  for(const df_l1_tool::Option& o : table)
+  {
+    std::string left = "  --" + o.name + (o.argument.empty() ? "" : " " + o.argument);
+    left.resize((std::max)(left.size() + 1, std::size_t(36)), ' ');
+    std::cout << left << o.help;
+    if(!o.default_text.empty())
+      std::cout << " (default: " << o.default_text << ")";
+    std::cout << "\n";
+  }
+  std::cout << "\nExit status: 0 success, 1 bad input or output, 2 bad usage.\n";
+}
+
+bool has_suffix(std::string s, const std::string& suffix)
+{
+  for(char& c : s)
+    c = char(std::tolower(static_cast<unsigned char>(c)));
+  return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
+void write_voxels(const std::string& path, const DF::Voxel_grid<Kernel>& grid,
+                  const DF::Distance_field<Kernel>* field)
+{
+  std::vector<Point_3> centres;
+  DF::Ply_point_property label{"label", true, {}}, distance{"distance", false, {}};
+  for(std::size_t v = 0; v < grid.size(); ++v)
+    if(grid.labels[v] != DF::Voxel_label::EXTERIOR)
+    {
+      centres.push_back(grid.center(v));
+      label.values.push_back(double(int(grid.labels[v])));
+      distance.values.push_back(field ? CGAL::to_double(field->distance(v)) : -1.0);
+    }
+  DF::write_point_ply(path, centres, {label, distance});
+}
+
+int run(const Settings& s)
+{
+  std::unique_ptr<tbb::global_control> thread_limit;
+  if(s.threads > 0)
+    thread_limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
+                                                         std::size_t(s.threads));
+  Stage_clock clock(s.quiet);
+  const auto cloud = clock.run("read", [&] { return DF::read_point_cloud<Kernel>(s.input); });
+  const std::vector<Point_3>& points = cloud.points;
+
+  // Every derived default is computed here and passed explicitly, so that the report
+  // states exactly what was used.
+  const CGAL::Bbox_3 box = DF::internal::checked_bbox(points, CGAL::Identity_property_map<Point_3>(), s.input.c_str());
+  const double diagonal = DF::internal::diagonal(box);
+  if(!(DF::internal::longest_side(box) > 0))
+    throw DF::Invalid_input(s.input + ": all " + std::to_string(points.size()) +
+                            " points coincide; there is no shape to skeletonize");
+  const double initial_voxel_size = std::isnan(s.initial_voxel_size) ? diagonal / 9 : s.initial_voxel_size;
+  const double upsampling_radius =
+    std::isnan(s.upsampling_radius) ? 3 * diagonal / std::cbrt(double(points.size())) : s.upsampling_radius;
+
+  // Scattered outliers go before voxelization; the voxel test catches the clusters.
+  const std::vector<bool> sparse_flags = clock.run("outlier_points", [&] { return DF::flag_sparse_outliers(points); });
+  std::vector<Point_3> kept;
+  for(std::size_t i = 0; i < points.size(); ++i)
+    if(!sparse_flags[i])
+      kept.push_back(points[i]);
+  std::vector<Point_3> added;
+  if(s.upsampling)
+    clock.run("upsampling", [&] {
+      DF::upsample_sparse_regions(kept, std::back_inserter(added),
+                                  params::upsampling_neighbors(s.upsampling_neighbors,
+                                  params::upsampling_radius(upsampling_radius,
+                                  params::voxel_resolution(s.voxel_resolution))));
+      return 0;
+    });
+  std::vector<Point_3> all_points = kept;
+  all_points.insert(all_points.end(), added.begin(), added.end());
+
+  const auto raw_grid = clock.run("voxelization", [&] {
+    return DF::voxelize_point_set(all_points, params::voxel_resolution(s.voxel_resolution,
+                                              params::initial_voxel_size(initial_voxel_size,
+                                              params::exterior_propagation_steps(s.exterior_propagation_steps))));
+  });
+  const int longest = (std::max)({raw_grid.dims[0], raw_grid.dims[1], raw_grid.dims[2]});
+  const int outlier_size = s.outlier_component_size >= 0 ? s.outlier_component_size : (std::max)(3, longest / 10);
+  DF::Outlier_voxel_statistics outlier_stats;
+  const auto grid = clock.run("outliers", [&] {
+    return DF::remove_outlier_voxels(raw_grid, params::outlier_component_size(outlier_size), &outlier_stats);
+  });
+  std::vector<bool> outlier_flags = DF::flag_outlier_points(points, grid);
+  std::size_t outlier_points = 0, sparse_outliers = 0;
+  for(std::size_t i = 0; i < points.size(); ++i)
+  {
+    sparse_outliers += sparse_flags[i];
+    outlier_flags[i] = outlier_flags[i] || sparse_flags[i];
+    outlier_points += outlier_flags[i];
+  }
+
+  std::unique_ptr<DF::Distance_field<Kernel>> field;
+  if(s.stage != "voxels")
+    field = std::make_unique<DF::Distance_field<Kernel>>(
+      clock.run("distance", [&] { return DF::compute_distance_field(grid); }));
+  std::unique_ptr<DF::Initial_skeleton<Kernel>> initial;
+  if(s.stage == "initial")
+  {
+    initial = std::make_unique<DF::Initial_skeleton<Kernel>>(clock.run("initial", [&] {
+      return DF::extract_initial_skeleton(*field, params::thinning_coefficient(s.thinning_coefficient,
+                                                   params::spur_length_ratio(s.spur_length_ratio)));
+    }));
+    if(boost::num_vertices(initial->graph) == 0)
+      throw DF::Invalid_input(s.input + ": no skeleton: the points enclose no volume at voxel resolution " +
+                              std::to_string(s.voxel_resolution) +
+                              " (flat, linear or too sparse input; try --stage voxels to look at the voxels)");
+    DF::assign_points_to_skeleton(points, outlier_flags, initial->graph);
+  }
+
+  clock.run("write", [&] {
+    if(initial)
+      DF::write_skeleton(s.output, initial->graph);
+    else
+      write_voxels(s.output, grid, field.get());
+    if(!s.preview.empty())
+    {
+      std::vector<DF::Preview_panel<Kernel>> rows;
+      if(initial)
+        rows.push_back({"initial skeleton", &initial->graph});
+      DF::Preview_options options;
+      options.title = s.input;
+      if(rows.empty())
+        DF::write_svg_preview(s.preview, points, options);
+      else
+        DF::write_svg_preview(s.preview, points, rows, options);
+    }
+    return 0;
+  });
+
+  if(!s.report.empty())
+  {
+    const double voxel_size = CGAL::to_double(grid.voxel_size);
+    Json_object parameters;
+    parameters.text("stage", s.stage)
+      .number("threads", s.threads > 0 ? s.threads : double(tbb::this_task_arena::max_concurrency()))
+      .number("seed", double(s.seed))
+      .number("bbox_diagonal", diagonal)
+      .boolean("upsampling", s.upsampling)
+      .number("upsampling_neighbors", s.upsampling_neighbors)
+      .number("upsampling_radius", upsampling_radius)
+      .number("voxel_resolution", s.voxel_resolution)
+      .number("initial_voxel_size", initial_voxel_size)
+      .number("initial_voxel_size_used", grid.levels.front().voxel_size)
+      .number("refinement_levels", double(grid.levels.size() - 1))
+      .number("voxel_size", voxel_size)
+      .number("exterior_propagation_steps", s.exterior_propagation_steps)
+      .number("outlier_component_size", outlier_size);
+    if(initial)
+      parameters.number("thinning_coefficient", s.thinning_coefficient)
+        .raw("thinning_parameters", "[" + std::to_string(initial->thinning_parameters[0] * voxel_size) + ", " +
+                                     std::to_string(initial->thinning_parameters[1] * voxel_size) + ", " +
+                                     std::to_string(initial->thinning_parameters[2] * voxel_size) + "]")
+        .number("spur_length_ratio", s.spur_length_ratio);
+    Json_object counts;
+    counts.number("input_points", double(points.size()))
+      .number("added_points", double(added.size()))
+      .number("outlier_points", double(outlier_points))
+      .number("sparse_outlier_points", double(sparse_outliers))
+      .number("outlier_clusters", double(outlier_stats.components_removed))
+      .number("shape_components", double(outlier_stats.components_kept))
+      .raw("grid", "[" + std::to_string(grid.dims[0]) + ", " + std::to_string(grid.dims[1]) + ", " +
+                     std::to_string(grid.dims[2]) + "]")
+      .number("boundary_voxels", double(grid.count(DF::Voxel_label::BOUNDARY)))
+      .number("interior_voxels", double(grid.count(DF::Voxel_label::INTERIOR)))
+      .number("exterior_voxels", double(grid.count(DF::Voxel_label::EXTERIOR)))
+      .number("outlier_voxels", double(grid.count(DF::Voxel_label::OUTLIER)));
+    if(field)
+      counts.number("max_distance", CGAL::to_double(field->voxel_size) * field->maximum());
+    if(initial)
+    {
+      const DF::Skeleton_statistics st = DF::skeleton_statistics(initial->graph);
+      counts.number("skeleton_voxels", double(initial->points.size()))
+        .number("skeleton_vertices", double(st.vertices))
+        .number("skeleton_edges", double(st.edges))
+        .number("skeleton_components", double(st.components))
+        .number("skeleton_cycles", double(st.cycles))
+        .number("skeleton_end_points", double(st.end_points))
+        .number("skeleton_junctions", double(st.junctions));
+    }
+    Json_object report;
+    report.text("input", s.input).text("output", s.output).text("version", DF_L1_VERSION)
+      .object("parameters", parameters).object("seconds", clock.times()).object("counts", counts)
+      .number("peak_memory_mib", peak_memory_mib());
+    DF::internal::write_file_atomically(s.report, [&](std::ostream& os) { os << report.str() << "\n"; });
+  }
+  if(!s.quiet)
+    std::cerr << "df_l1_skeleton: wrote " << s.output << (s.preview.empty() ? "" : " and " + s.preview)
+              << (s.report.empty() ? "" : " and " + s.report) << "\n";
+  return 0;
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+  Settings settings;
+  bool help = false, version = false;
+  try
+  {
+    const auto table = option_table(settings, help, version);
+    const std::vector<std::string> positional = df_l1_tool::parse_options(argc, argv, table);
+    if(help)
+    {
+      print_help(table);
+      return 0;
+    }
+    if(version)
+    {
+      std::cout << "df_l1_skeleton " DF_L1_VERSION "\n";
+      return 0;
+    }
+    if(positional.size() > 2)
+      throw Usage_error("too many arguments (expected [INPUT] [OUTPUT])");
+    settings.input = positional.size() > 0 ? positional[0] : DF_L1_DEFAULT_INPUT;
+    const bool voxel_stage = settings.stage != "initial";
+    settings.output = positional.size() > 1 ? positional[1] : (voxel_stage ? "voxels.ply" : "skeleton.obj");
+    if(voxel_stage && !has_suffix(settings.output, ".ply"))
+      throw Usage_error("--stage " + settings.stage + " writes voxels: OUTPUT must end in .ply");
+    if(!voxel_stage && !has_suffix(settings.output, ".obj") && !has_suffix(settings.output, ".ply") &&
+       !has_suffix(settings.output, ".polylines.txt"))
+      throw Usage_error("OUTPUT must end in .obj, .ply or .polylines.txt, got '" + settings.output + "'");
+    if(!settings.preview.empty() && !has_suffix(settings.preview, ".svg"))
+      throw Usage_error("--preview expects a .svg file");
+    if(!settings.report.empty() && !has_suffix(settings.report, ".json"))
+      throw Usage_error("--report expects a .json file");
+  }
+  catch(const Usage_error& e)
+  {
+    std::cerr << "df_l1_skeleton: " << e.what() << "\n";
+    return 2;
+  }
+  try
+  {
+    return run(settings);
+  }
+  catch(const CGAL::DF_L1::Invalid_input& e)
+  {
+    const std::string what = e.what();
+    // Library messages name the stage; the file name makes them actionable.
+    std::cerr << "\ndf_l1_skeleton: " << (what.compare(0, settings.input.size(), settings.input) == 0 ? "" : settings.input + ": ")
+              << what << "\n";
+  }
+  catch(const std::bad_alloc&)
+  {
+    std::cerr << "\ndf_l1_skeleton: " << settings.input << ": out of memory (try a lower --voxel-resolution)\n";
+  }
+  catch(const std::exception& e)
+  {
+    std::cerr << "\ndf_l1_skeleton: " << e.what() << "\n";
+  }
+  return 1;
+}
