@@ -7,6 +7,7 @@
 /// Stage 0a: outlier points far from every other sample, flagged before voxelization.
 
 #include <CGAL/DF_L1_skeleton/errors.h>
+#include <CGAL/DF_L1_skeleton/internal/parallel_for.h>
 #include <CGAL/DF_L1_skeleton/internal/point_range.h>
 
 #include <CGAL/Named_function_parameters.h>
@@ -15,11 +16,6 @@
 #include <CGAL/Search_traits_adapter.h>
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/tags.h>
-
-#ifdef CGAL_LINKED_WITH_TBB
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-#endif
 
 #include <algorithm>
 #include <cmath>
@@ -90,16 +86,7 @@ std::vector<bool> flag_sparse_outliers(const PointRange& points, unsigned int k 
       d2 = (std::max)(d2, CGAL::to_double(neighbour.second));
     kth[i] = std::sqrt(d2);
   };
-#ifdef CGAL_LINKED_WITH_TBB
-  if(std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value)
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 512), [&](const tbb::blocked_range<std::size_t>& r) {
-      for(std::size_t i = r.begin(); i != r.end(); ++i)
-        measure(i);
-    });
-  else
-#endif
-    for(std::size_t i = 0; i < n; ++i)
-      measure(i);
+  internal::for_each_index<ConcurrencyTag>(n, measure);
   std::vector<double> sorted = kth;
   std::nth_element(sorted.begin(), sorted.begin() + n / 2, sorted.end());
   const double threshold = ratio * sorted[n / 2];

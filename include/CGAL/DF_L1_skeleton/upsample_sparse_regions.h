@@ -7,6 +7,7 @@
 /// Stage 0 (paper, sections 4 and 7): upsampling of sparsely sampled regions.
 
 #include <CGAL/DF_L1_skeleton/errors.h>
+#include <CGAL/DF_L1_skeleton/internal/parallel_for.h>
 #include <CGAL/DF_L1_skeleton/internal/point_range.h>
 #include <CGAL/DF_L1_skeleton/internal/uniform_grid.h>
 #include <CGAL/DF_L1_skeleton/named_parameters.h>
@@ -14,11 +15,6 @@
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/tags.h>
-
-#ifdef CGAL_LINKED_WITH_TBB
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-#endif
 
 #include <algorithm>
 #include <array>
@@ -84,12 +80,7 @@ OutputIterator upsample_sparse_regions(const PointRange& points, OutputIterator 
 
   const auto point_map = NP_helper::get_const_point_map(points, np);
   const CGAL::Bbox_3 box = internal::checked_bbox(points, point_map, "upsampling");
-  std::vector<std::array<double, 3>> xyz;
-  for(const auto& value : points)
-  {
-    const Point_3& p = get(point_map, value);
-    xyz.push_back({{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())}});
-  }
+  const std::vector<std::array<double, 3>> xyz = internal::to_xyz(points, point_map);
   const std::size_t n = xyz.size();
   const double diagonal = internal::diagonal(box);
   if(n < 2 || !(diagonal > 0))
@@ -114,17 +105,7 @@ OutputIterator upsample_sparse_regions(const PointRange& points, OutputIterator 
     grid.for_each_in_ball(xyz[i], r, [&](std::size_t, double) { return ++found <= k; });
     sparse[i] = found <= k;
   };
-#ifdef CGAL_LINKED_WITH_TBB
-  if(std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value)
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 1024),
-                      [&](const tbb::blocked_range<std::size_t>& range) {
-                        for(std::size_t i = range.begin(); i != range.end(); ++i)
-                          test(i);
-                      });
-  else
-#endif
-    for(std::size_t i = 0; i < n; ++i)
-      test(i);
+  internal::for_each_index<ConcurrencyTag>(n, test, 1024);
 
   std::vector<std::pair<std::size_t, std::size_t>> pairs;
   std::vector<std::size_t> neighbours;

@@ -341,13 +341,7 @@ voxelize_point_set(const PointRange& points, const NamedParameters& np = paramet
   // Rounded down: a coarsest level coarser than s0 would enclose more empty space.
   const int refinements = (std::max)(0, int(std::floor(std::log(s0 / finest) / std::log(3.0) + 1e-9)));
 
-  std::vector<std::array<double, 3>> xyz;
-  xyz.reserve(internal::range_size(points, point_map));
-  for(const auto& value : points)
-  {
-    const Point_3& p = get(point_map, value);
-    xyz.push_back({{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())}});
-  }
+  const std::vector<std::array<double, 3>> xyz = internal::to_xyz(points, point_map);
 
   // Coarsest grid, centred on the bounding box with one empty layer around it.
   Grid_geometry<Traits> g;

@@ -9,6 +9,7 @@
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/property_map.h>
 
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <string>
@@ -49,6 +50,19 @@ inline double diagonal(const CGAL::Bbox_3& b)
 inline double longest_side(const CGAL::Bbox_3& b)
 {
   return (std::max)({b.xmax() - b.xmin(), b.ymax() - b.ymin(), b.zmax() - b.zmin()});
+}
+
+// The points as plain double triples: the grid stages only need coordinates.
+template <class PointRange, class PointMap>
+std::vector<std::array<double, 3>> to_xyz(const PointRange& points, PointMap point_map)
+{
+  std::vector<std::array<double, 3>> xyz;
+  for(const auto& value : points)
+  {
+    const auto& p = get(point_map, value);
+    xyz.push_back({{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())}});
+  }
+  return xyz;
 }
 
 template <class PointRange, class PointMap>

@@ -1,0 +1,43 @@
+// Copyright (c) 2026 DF_L1_skeleton contributors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+#ifndef CGAL_DF_L1_SKELETON_INTERNAL_PARALLEL_FOR_H
+#define CGAL_DF_L1_SKELETON_INTERNAL_PARALLEL_FOR_H
+
+#include <CGAL/tags.h>
+
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#endif
+
+#include <cstddef>
+#include <type_traits>
+
+namespace CGAL {
+namespace DF_L1 {
+namespace internal {
+
+// f(i) for i in [0, n), with TBB when ConcurrencyTag is Parallel_tag. Each f(i) must
+// write only its own outputs, so that the result does not depend on the threads.
+template <class ConcurrencyTag, class Function>
+void for_each_index(std::size_t n, const Function& f, std::size_t grain = 512)
+{
+#ifdef CGAL_LINKED_WITH_TBB
+  if(std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value)
+  {
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, grain), [&](const tbb::blocked_range<std::size_t>& r) {
+      for(std::size_t i = r.begin(); i != r.end(); ++i)
+        f(i);
+    });
+    return;
+  }
+#endif
+  for(std::size_t i = 0; i < n; ++i)
+    f(i);
+}
+
+} // namespace internal
+} // namespace DF_L1
+} // namespace CGAL
+
+#endif // CGAL_DF_L1_SKELETON_INTERNAL_PARALLEL_FOR_H
