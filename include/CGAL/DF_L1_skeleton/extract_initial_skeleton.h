@@ -18,7 +18,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -126,18 +125,22 @@ template <class Traits>
 Skeleton_graph<Traits> voxel_curve_graph(const Distance_field<Traits>& df, const std::vector<char>& in)
 {
   Skeleton_graph<Traits> g;
-  std::unordered_map<std::size_t, std::size_t> vertex_of;
+  // Vertices are added in voxel order, so the graph is the same on every run.
+  std::vector<std::size_t> voxels;
   for(std::size_t v = 0; v < in.size(); ++v)
     if(in[v])
     {
       const std::size_t d = boost::add_vertex(g);
-      vertex_of.emplace(v, d);
+      voxels.push_back(v);
       g[d].point = df.center(v);
       g[d].radius = df.distance(v);
     }
-  for(const auto& entry : vertex_of)
+  const auto vertex_of = [&](std::size_t v) {
+    return std::size_t(std::lower_bound(voxels.begin(), voxels.end(), v) - voxels.begin());
+  };
+  for(std::size_t d = 0; d < voxels.size(); ++d)
   {
-    const std::size_t v = entry.first;
+    const std::size_t v = voxels[d];
     const std::array<int, 3> c = df.coordinates(v);
     for(int cell = 14; cell < 27; ++cell) // half of the neighbourhood: each edge once
     {
@@ -158,7 +161,7 @@ Skeleton_graph<Traits> voxel_curve_graph(const Distance_field<Traits>& df, const
                   ex * ex + ey * ey + ez * ez < norm && fx * fx + fy * fy + fz * fz < norm;
       }
       if(!spanned)
-        boost::add_edge(entry.second, vertex_of.at(df.index(i, j, k)), g);
+        boost::add_edge(d, vertex_of(df.index(i, j, k)), g);
     }
   }
   return g;

@@ -17,7 +17,11 @@
 /// auto np2 = params::thinning_coefficient(0.8, params::voxel_resolution(64));
 /// \endcode
 
+#include <CGAL/DF_L1_skeleton/errors.h>
+
 #include <CGAL/Named_function_parameters.h>
+
+#include <string>
 
 namespace CGAL {
 namespace internal_np {
@@ -83,6 +87,22 @@ CGAL_DF_L1_ADD_NAMED_PARAMETER(df_l1_spur_length, spur_length_ratio)
 #undef CGAL_DF_L1_ADD_NAMED_PARAMETER
 
 } // namespace parameters
+
+namespace DF_L1 {
+namespace internal {
+
+// V is read by several stages (upsampling spacing, voxelization): one default, one range.
+template <class NamedParameters>
+int voxel_resolution(const NamedParameters& np, const char* stage)
+{
+  const int V = parameters::choose_parameter(parameters::get_parameter(np, internal_np::df_l1_voxel_resolution), 100);
+  if(V < 3 || V > 2048)
+    throw Invalid_input(std::string(stage) + ": voxel_resolution must be in [3, 2048], got " + std::to_string(V));
+  return V;
+}
+
+} // namespace internal
+} // namespace DF_L1
 } // namespace CGAL
 
 #endif // CGAL_DF_L1_SKELETON_NAMED_PARAMETERS_H

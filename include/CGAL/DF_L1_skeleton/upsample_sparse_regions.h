@@ -93,9 +93,7 @@ OutputIterator upsample_sparse_regions(const PointRange& points, OutputIterator 
                                     3 * diagonal / std::cbrt(double(n)));
   if(!(r > 0) || !std::isfinite(r))
     throw Invalid_input("upsampling: upsampling_radius must be positive and finite");
-  const int V = choose_parameter(get_parameter(np, internal_np::df_l1_voxel_resolution), 100);
-  if(V < 3 || V > 2048)
-    throw Invalid_input("upsampling: voxel_resolution must be in [3, 2048], got " + std::to_string(V));
+  const int V = internal::voxel_resolution(np, "upsampling");
   const double spacing = internal::longest_side(box) / V;
 
   const internal::Uniform_grid grid(xyz, r);

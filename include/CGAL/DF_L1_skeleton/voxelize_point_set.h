@@ -326,9 +326,7 @@ voxelize_point_set(const PointRange& points, const NamedParameters& np = paramet
   const double longest = internal::longest_side(box);
   if(!(longest > 0))
     throw Invalid_input("voxelization: all points coincide, there is no shape to voxelize");
-  const int V = choose_parameter(get_parameter(np, internal_np::df_l1_voxel_resolution), 100);
-  if(V < 3 || V > 2048)
-    throw Invalid_input("voxelization: voxel_resolution must be in [3, 2048], got " + std::to_string(V));
+  const int V = internal::voxel_resolution(np, "voxelization");
   const double s0 = choose_parameter(get_parameter(np, internal_np::df_l1_initial_voxel_size),
                                      internal::diagonal(box) / 9);
   if(!(s0 > 0) || !std::isfinite(s0))

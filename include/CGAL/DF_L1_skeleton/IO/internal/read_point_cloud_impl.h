@@ -959,6 +959,18 @@ inline Ply_walk ply_walk_binary(Ply_binary_cursor& c, const Ply_element& e, cons
   return Ply_walk::ok;
 }
 
+// The tail shared by the binary and ASCII PLY parsers; coordinates are already checked.
+template <class Cloud>
+void append_ply_vertex(Cloud& out, const double (&values)[6], bool has_normals, bool& normals_finite)
+{
+  out.points.emplace_back(values[0], values[1], values[2]);
+  if(has_normals) {
+    normals_finite = normals_finite && std::isfinite(values[3]) && std::isfinite(values[4]) &&
+                     std::isfinite(values[5]);
+    out.normals.emplace_back(values[3], values[4], values[5]);
+  }
+}
+
 template <class Cloud>
 void parse_ply_binary(std::string_view buf, const Ply_header& h, std::size_t vertex_index,
                       const std::vector<int>& roles, bool has_normals, const std::string& name,
@@ -1020,12 +1032,7 @@ void parse_ply_binary(std::string_view buf, const Ply_header& h, std::size_t ver
     for(int r = 0; r < 3; ++r)
       if(!std::isfinite(values[r]))
         fail(name, where(), "coordinate is not finite (" + format_value(values[r]) + ")");
-    out.points.emplace_back(values[0], values[1], values[2]);
-    if(has_normals) {
-      normals_finite = normals_finite && std::isfinite(values[3]) && std::isfinite(values[4]) &&
-                       std::isfinite(values[5]);
-      out.normals.emplace_back(values[3], values[4], values[5]);
-    }
+    append_ply_vertex(out, values, has_normals, normals_finite);
   }
   if(!normals_finite)
     out.normals.clear();
@@ -1100,12 +1107,7 @@ void parse_ply_ascii(std::string_view buf, const Ply_header& h, std::size_t vert
     for(int r = 0; r < 3; ++r)
       if(!std::isfinite(values[r]))
         fail(name, where(), "coordinate is not finite: " + quote_token(tokens[r]));
-    out.points.emplace_back(values[0], values[1], values[2]);
-    if(has_normals) {
-      normals_finite = normals_finite && std::isfinite(values[3]) && std::isfinite(values[4]) &&
-                       std::isfinite(values[5]);
-      out.normals.emplace_back(values[3], values[4], values[5]);
-    }
+    append_ply_vertex(out, values, has_normals, normals_finite);
   }
   if(!normals_finite)
     out.normals.clear();
