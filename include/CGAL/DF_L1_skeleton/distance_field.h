@@ -30,6 +30,9 @@ public:
 
   /// distance of each voxel, in voxel units
   std::vector<float> values;
+  /// the labels of the grid the field was computed from (later stages need to know
+  /// which voxels are exterior, not only which have distance 0)
+  std::vector<Voxel_label> labels;
 
   /// distance of the voxel with linear index `v`, in input units
   FT distance(std::size_t v) const { return FT(values[v]) * this->voxel_size; }
@@ -74,6 +77,7 @@ Distance_field<Traits> compute_distance_field(const Voxel_grid<Traits>& grid)
   Distance_field<Traits> field;
   static_cast<Grid_geometry<Traits>&>(field) = grid;
   field.values.resize(grid.size());
+  field.labels = grid.labels;
   for(std::size_t v = 0; v < grid.size(); ++v)
     field.values[v] = grid.labels[v] == Voxel_label::INTERIOR ? internal::EDT_INFINITY : 0.f;
   internal::squared_euclidean_distance_transform<ConcurrencyTag>(field.values, grid.dims);

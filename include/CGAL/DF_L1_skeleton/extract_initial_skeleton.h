@@ -10,7 +10,9 @@
 #include <CGAL/DF_L1_skeleton/distance_field.h>
 #include <CGAL/DF_L1_skeleton/errors.h>
 #include <CGAL/DF_L1_skeleton/internal/box_sum.h>
-#include <CGAL/DF_L1_skeleton/internal/voxel_topology.h>
+#include <CGAL/DF_L1_skeleton/internal/curve_thinning.h>
+#include <CGAL/DF_L1_skeleton/internal/voxel_curve_graph.h>
+#include <CGAL/DF_L1_skeleton/internal/voxel_morphology.h>
 #include <CGAL/DF_L1_skeleton/named_parameters.h>
 
 #include <CGAL/Named_function_parameters.h>
@@ -43,128 +45,45 @@ struct Initial_skeleton
 
 namespace internal {
 
-// Morphological closing (26-neighbour dilation, then erosion) of the voxel set, kept
-// inside the interior. The ridge band S is full of one-voxel pits and tunnels where the
-// discrete field dips; thinning preserves topology, so it would keep every one of them
-// as a small loop. Closing fills them and leaves the loops of the shape (a handle spans
-// many voxels) alone.
+// The solid that the curve graph is thinned from: the interior voxels, closed by one
+// voxel (a dilation then an erosion by the 3x3x3 cube) and with enclosed cavities filled,
+// but never taking an exterior or outlier voxel. Noise puts boundary voxels inside thin
+// parts, and each such pit or tunnel would survive thinning as a small loop or shell;
+// the holes of the shape are exterior voxels, so closing leaves them alone.
 template <class Traits>
-void close_voxel_set(const Distance_field<Traits>& df, std::vector<char>& in)
+std::vector<char> shape_volume(const Distance_field<Traits>& df)
 {
-  const auto dilate = [&](const std::vector<char>& from, bool value) {
-    // value = 1: dilation of the 1s; value = 0: dilation of the 0s (erosion of the 1s).
-    std::vector<char> to = from;
-    for(int k = 0; k < df.dims[2]; ++k)
-      for(int j = 0; j < df.dims[1]; ++j)
-        for(int i = 0; i < df.dims[0]; ++i)
-        {
-          const std::size_t v = df.index(i, j, k);
-          if(bool(from[v]) == value)
-            continue;
-          for(int cell = 0; cell < 27; ++cell)
-          {
-            const int a = i + cell % 3 - 1, b = j + (cell / 3) % 3 - 1, c = k + cell / 9 - 1;
-            if(df.contains(a, b, c) && bool(from[df.index(a, b, c)]) == value)
-            {
-              to[v] = value;
-              break;
-            }
-          }
-        }
-    return to;
-  };
-  std::vector<char> closed = dilate(dilate(in, true), false);
-  for(std::size_t v = 0; v < in.size(); ++v)
-    in[v] = (in[v] || closed[v]) && df.values[v] > 0;
+  std::vector<char> in(df.size()), outside(df.size());
+  for(std::size_t v = 0; v < df.size(); ++v)
+  {
+    in[v] = df.labels[v] == Voxel_label::INTERIOR;
+    outside[v] = df.labels[v] == Voxel_label::EXTERIOR || df.labels[v] == Voxel_label::OUTLIER;
+  }
+  std::vector<char> closed = in;
+  cube_filter(closed, df.dims, true);
+  cube_filter(closed, df.dims, false);
+  for(std::size_t v = 0; v < df.size(); ++v)
+    in[v] = in[v] || (closed[v] && !outside[v]);
+  fill_cavities(in, outside, df.dims);
+  return in;
 }
 
-// Topology-preserving thinning of the voxel set `in` (flags on the grid): simple voxels
-// that are not curve ends are removed, those nearest the boundary first, so that what
-// remains follows the ridge of the distance field.
+// Whether a skeleton voxel may end a curve: its depth is at least `ratio` times the
+// largest depth within its own depth (plus a voxel). The end of a real branch sits near
+// the centre of the ball that caps it, where the field peaks; the noise of the surface
+// raises ridge voxels a few voxels deep on the slope of a much deeper field, and a curve
+// ending there would be a spur.
 template <class Traits>
-void thin_voxel_set(const Distance_field<Traits>& df, std::vector<char>& in, std::vector<std::size_t> voxels)
+bool is_deep_end(const Distance_field<Traits>& df, std::size_t v, double ratio)
 {
-  std::sort(voxels.begin(), voxels.end(), [&](std::size_t a, std::size_t b) {
-    return df.values[a] != df.values[b] ? df.values[a] < df.values[b] : a < b;
-  });
-  const auto neighbourhood = [&](std::size_t v, int& count) {
-    Neighbourhood n;
-    const std::array<int, 3> c = df.coordinates(v);
-    count = 0;
-    for(int cell = 0; cell < 27; ++cell)
-    {
-      const int i = c[0] + cell % 3 - 1, j = c[1] + (cell / 3) % 3 - 1, k = c[2] + cell / 9 - 1;
-      n[cell] = cell != 13 && df.contains(i, j, k) && in[df.index(i, j, k)];
-      count += n[cell];
-    }
-    return n;
-  };
-  for(bool changed = true; changed;)
-  {
-    changed = false;
-    std::size_t kept = 0;
-    for(std::size_t v : voxels)
-    {
-      int count = 0;
-      const Neighbourhood n = neighbourhood(v, count);
-      if(count >= 2 && is_simple(n))
-      {
-        in[v] = 0;
-        changed = true;
-      }
-      else
-        voxels[kept++] = v;
-    }
-    voxels.resize(kept);
-  }
-}
-
-// Graph of the 26-adjacent voxels, without the diagonal edges that a shorter two-edge
-// path already spans (they would make triangles at every staircase step).
-template <class Traits>
-Skeleton_graph<Traits> voxel_curve_graph(const Distance_field<Traits>& df, const std::vector<char>& in)
-{
-  Skeleton_graph<Traits> g;
-  // Vertices are added in voxel order, so the graph is the same on every run.
-  std::vector<std::size_t> voxels;
-  for(std::size_t v = 0; v < in.size(); ++v)
-    if(in[v])
-    {
-      const std::size_t d = boost::add_vertex(g);
-      voxels.push_back(v);
-      g[d].point = df.center(v);
-      g[d].radius = df.distance(v);
-    }
-  const auto vertex_of = [&](std::size_t v) {
-    return std::size_t(std::lower_bound(voxels.begin(), voxels.end(), v) - voxels.begin());
-  };
-  for(std::size_t d = 0; d < voxels.size(); ++d)
-  {
-    const std::size_t v = voxels[d];
-    const std::array<int, 3> c = df.coordinates(v);
-    for(int cell = 14; cell < 27; ++cell) // half of the neighbourhood: each edge once
-    {
-      const int dx = cell % 3 - 1, dy = (cell / 3) % 3 - 1, dz = cell / 9 - 1;
-      const int i = c[0] + dx, j = c[1] + dy, k = c[2] + dz;
-      if(!df.contains(i, j, k) || !in[df.index(i, j, k)])
-        continue;
-      const int norm = dx * dx + dy * dy + dz * dz;
-      bool spanned = false;
-      for(int other = 0; other < 27 && !spanned && norm > 1; ++other)
-      {
-        const int ex = other % 3 - 1, ey = (other / 3) % 3 - 1, ez = other / 9 - 1;
-        const int fx = dx - ex, fy = dy - ey, fz = dz - ez; // from w to the neighbour
-        if(other == 13 || std::abs(fx) > 1 || std::abs(fy) > 1 || std::abs(fz) > 1)
-          continue;
-        const int wi = c[0] + ex, wj = c[1] + ey, wk = c[2] + ez;
-        spanned = df.contains(wi, wj, wk) && in[df.index(wi, wj, wk)] &&
-                  ex * ex + ey * ey + ez * ez < norm && fx * fx + fy * fy + fz * fz < norm;
-      }
-      if(!spanned)
-        boost::add_edge(d, vertex_of(df.index(i, j, k)), g);
-    }
-  }
-  return g;
+  const std::array<int, 3> c = df.coordinates(v);
+  const int r = int(std::ceil(2 * df.values[v])) + 1;
+  float deepest = 0;
+  for(int k = (std::max)(0, c[2] - r); k <= (std::min)(df.dims[2] - 1, c[2] + r); ++k)
+    for(int j = (std::max)(0, c[1] - r); j <= (std::min)(df.dims[1] - 1, c[1] + r); ++j)
+      for(int i = (std::max)(0, c[0] - r); i <= (std::min)(df.dims[0] - 1, c[0] + r); ++i)
+        deepest = (std::max)(deepest, df.values[df.index(i, j, k)]);
+  return df.values[v] >= ratio * deepest;
 }
 
 // Removes, repeatedly, the terminal branches shorter than `ratio` times the local
@@ -246,12 +165,23 @@ void prune_spurs(Skeleton_graph<Traits>& g, double ratio, double voxel_size)
 /// (DT - MNT_k)|, the threshold of Gagvani and Silver that the paper builds on, with
 /// c = 0.86.
 ///
-/// The skeleton voxels S form a band a few voxels thick. `Initial_skeleton::graph` is
-/// a curve through them: topology-preserving thinning (simple voxels that are not curve
-/// ends are removed, lowest distance first), a 26-adjacency graph without redundant
-/// diagonals, and pruning of the terminal branches shorter than `spur_length_ratio`
-/// times the local radius at their junction (plus one voxel). Loops of S (the handle of
-/// a torus) are kept.
+/// The skeleton voxels S form a band a few voxels thick, broken where noise flattens
+/// the ridge. `Initial_skeleton::graph` is a curve through it with the topology of the
+/// shape (our addition; the paper uses S alone):
+/// - the solid is the interior voxels, closed by one voxel and with cavities filled, so
+///   that pits and tunnels that noise leaves in thin parts do not become loops;
+/// - it is thinned to curves without changing its topology (simple voxels only), in
+///   the order of increasing distance, so the curves follow the ridge of the field; a
+///   torus keeps its loop, a solid becomes a tree. A curve end is kept only at a voxel
+///   of S whose distance is at least 3/4 of the largest distance within twice its own:
+///   the end of a branch sits near the centre of the ball that caps it, while noise
+///   raises ridge voxels on the slope of a deeper field;
+/// - the 26-adjacency graph of the curve voxels, without redundant diagonals and
+///   without the small cycles that voxel clusters make at junctions (the graph keeps as
+///   many cycles as the curve voxels have loops, computed from their Euler
+///   characteristic);
+/// - terminal branches shorter than `spur_length_ratio` times the local radius at
+///   their junction (plus one voxel) are pruned.
 ///
 /// \tparam Traits a model of `Kernel`
 /// \param field the distance field returned by `compute_distance_field()`
@@ -284,6 +214,7 @@ Initial_skeleton<Traits> extract_initial_skeleton(const Distance_field<Traits>& 
   if(!(spur_ratio >= 0) || !std::isfinite(spur_ratio))
     throw Invalid_input("initial skeleton: spur_length_ratio must be a non-negative number");
 
+  const double end_depth_ratio = 0.75;
   Initial_skeleton<Traits> result;
   const internal::Box_sum sums(field.values, field.dims);
   const int radii[3] = {1, 2, 3};
@@ -330,13 +261,22 @@ Initial_skeleton<Traits> extract_initial_skeleton(const Distance_field<Traits>& 
         }
       }
 
-  internal::close_voxel_set(field, in);
-  std::vector<std::size_t> band;
-  for(std::size_t v = 0; v < in.size(); ++v)
-    if(in[v])
-      band.push_back(v);
-  internal::thin_voxel_set(field, in, band);
-  result.graph = internal::voxel_curve_graph(field, in);
+  std::vector<char> curves = internal::shape_volume(field);
+  std::vector<signed char> deep_end(field.size(), -1); // memo of is_deep_end
+  internal::thin_to_curves(field, field.values, curves, [&](std::size_t v) {
+    if(!in[v])
+      return false;
+    if(deep_end[v] < 0)
+      deep_end[v] = internal::is_deep_end(field, v, end_depth_ratio);
+    return bool(deep_end[v]);
+  });
+  std::vector<std::size_t> curve_voxels;
+  for(std::size_t v = 0; v < curves.size(); ++v)
+    if(curves[v])
+      curve_voxels.push_back(v);
+  result.graph = internal::voxel_curve_graph<Traits>(field, curve_voxels);
+  for(std::size_t d = 0; d < curve_voxels.size(); ++d)
+    result.graph[d].radius = field.distance(curve_voxels[d]);
   internal::prune_spurs(result.graph, spur_ratio, CGAL::to_double(field.voxel_size));
   return result;
 }

@@ -6,6 +6,8 @@
 /// \file skeleton_statistics.h
 /// Topological counts of a skeleton graph (what the report and the tests look at).
 
+#include <CGAL/Iterator_range.h>
+
 #include <boost/graph/adjacency_list.hpp>
 #include <boost/graph/connected_components.hpp>
 

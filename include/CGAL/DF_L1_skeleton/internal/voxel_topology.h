@@ -4,73 +4,96 @@
 #define CGAL_DF_L1_SKELETON_INTERNAL_VOXEL_TOPOLOGY_H
 
 #include <array>
+#include <cstdint>
 #include <cstdlib>
 
 namespace CGAL {
 namespace DF_L1 {
 namespace internal {
 
-// A 3x3x3 neighbourhood; cell (dx,dy,dz) in {-1,0,1}^3 has index (dz+1)*9+(dy+1)*3+(dx+1),
-// the centre is cell 13.
-typedef std::array<bool, 27> Neighbourhood;
+// A 3x3x3 neighbourhood as a bit mask: bit (dz+1)*9+(dy+1)*3+(dx+1) is the cell at offset
+// (dx,dy,dz) in {-1,0,1}^3; the centre is bit 13 and is ignored.
+typedef std::uint32_t Neighbourhood;
 
 inline int cell_offset_norm(int c) // number of non-zero offsets of cell c
 {
   return std::abs(c % 3 - 1) + std::abs((c / 3) % 3 - 1) + std::abs(c / 9 - 1);
 }
 
-inline bool cells_adjacent(int a, int b, int max_norm)
+// For every cell, the mask of the cells adjacent to it (centre excluded) with offset norm
+// <= max_norm: 1 gives 6-adjacency, 3 gives 26-adjacency.
+template <int max_norm>
+const std::array<Neighbourhood, 27>& adjacency_masks()
 {
-  const int dx = std::abs(a % 3 - b % 3), dy = std::abs((a / 3) % 3 - (b / 3) % 3),
-            dz = std::abs(a / 9 - b / 9);
-  return dx <= 1 && dy <= 1 && dz <= 1 && dx + dy + dz >= 1 && dx + dy + dz <= max_norm;
+  static const std::array<Neighbourhood, 27> masks = [] {
+    std::array<Neighbourhood, 27> m{};
+    for(int a = 0; a < 27; ++a)
+      for(int b = 0; b < 27; ++b)
+      {
+        const int dx = std::abs(a % 3 - b % 3), dy = std::abs((a / 3) % 3 - (b / 3) % 3),
+                  dz = std::abs(a / 9 - b / 9);
+        if(b != 13 && dx <= 1 && dy <= 1 && dz <= 1 && dx + dy + dz >= 1 && dx + dy + dz <= max_norm)
+          m[a] |= Neighbourhood(1) << b;
+      }
+    return m;
+  }();
+  return masks;
 }
 
-// Number of components of the cells of `in` (centre excluded) that satisfy `member`, with
-// adjacency of offset norm <= max_norm (1: 6-adjacency, 3: 26-adjacency). When
-// `touching_centre_norm` > 0 only the components containing a cell at offset norm
-// <= touching_centre_norm from the centre are counted.
-template <class Member>
-int count_components(const Member& member, int max_norm, int touching_centre_norm)
+inline Neighbourhood cells_up_to_norm(int norm)
 {
-  std::array<int, 27> component;
-  component.fill(-1);
-  int count = 0;
-  for(int seed = 0; seed < 27; ++seed)
+  Neighbourhood m = 0;
+  for(int c = 0; c < 27; ++c)
+    if(c != 13 && cell_offset_norm(c) <= norm)
+      m |= Neighbourhood(1) << c;
+  return m;
+}
+
+inline int lowest_bit(Neighbourhood m)
+{
+  int b = 0;
+  while(!(m & 1u))
   {
-    if(seed == 13 || !member(seed) || component[seed] >= 0)
-      continue;
-    int stack[27], top = 0;
-    stack[top++] = seed;
-    component[seed] = seed;
-    bool touches = touching_centre_norm == 0;
-    while(top > 0)
+    m >>= 1;
+    ++b;
+  }
+  return b;
+}
+
+// Number of connected components of the cells of `members` for the adjacency `adjacency`;
+// only components that meet `touching` are counted.
+inline int count_components(Neighbourhood members, const std::array<Neighbourhood, 27>& adjacency,
+                            Neighbourhood touching)
+{
+  int count = 0;
+  while(members)
+  {
+    Neighbourhood component = Neighbourhood(1) << lowest_bit(members), frontier = component;
+    while(frontier)
     {
-      const int c = stack[--top];
-      touches = touches || cell_offset_norm(c) <= touching_centre_norm;
-      for(int d = 0; d < 27; ++d)
-        if(d != 13 && component[d] < 0 && member(d) && cells_adjacent(c, d, max_norm))
-        {
-          component[d] = seed;
-          stack[top++] = d;
-        }
+      Neighbourhood next = 0;
+      for(Neighbourhood f = frontier; f; f &= f - 1)
+        next |= adjacency[lowest_bit(f)];
+      frontier = next & members & ~component;
+      component |= frontier;
     }
-    count += touches;
+    members &= ~component;
+    count += (component & touching) != 0;
   }
   return count;
 }
 
 // A voxel of a 26-connected object is simple (removable without changing the topology)
 // iff its 26-neighbours in the object form one 26-component and the background
-// 18-neighbours form one 6-component 6-adjacent to it (Bertrand and Malandain, 1994).
-inline bool is_simple(const Neighbourhood& n)
+// 18-neighbours have one 6-component 6-adjacent to it (Bertrand and Malandain, 1994).
+inline bool is_simple(Neighbourhood n)
 {
-  const int foreground = count_components([&](int c) { return n[c]; }, 3, 0);
-  if(foreground != 1)
+  static const Neighbourhood all = cells_up_to_norm(3), n18 = cells_up_to_norm(2),
+                             n6 = cells_up_to_norm(1);
+  n &= all;
+  if(count_components(n, adjacency_masks<3>(), all) != 1)
     return false;
-  const int background =
-    count_components([&](int c) { return !n[c] && cell_offset_norm(c) <= 2; }, 1, 1);
-  return background == 1;
+  return count_components(~n & n18, adjacency_masks<1>(), n6) == 1;
 }
 
 } // namespace internal

@@ -1,0 +1,202 @@
+// Geometry and topology of the initial skeleton (paper, section 5) on synthetic shapes
+// with known skeletons, and the voxel topology it relies on.
+#include "support/synthetic_shapes.h"
+
+#include <CGAL/DF_L1_skeleton/distance_field.h>
+#include <CGAL/DF_L1_skeleton/extract_initial_skeleton.h>
+#include <CGAL/DF_L1_skeleton/flag_sparse_outliers.h>
+#include <CGAL/DF_L1_skeleton/internal/voxel_curve_graph.h>
+#include <CGAL/DF_L1_skeleton/internal/voxel_topology.h>
+#include <CGAL/DF_L1_skeleton/remove_outlier_voxels.h>
+#include <CGAL/DF_L1_skeleton/skeleton_statistics.h>
+#include <CGAL/DF_L1_skeleton/upsample_sparse_regions.h>
+#include <CGAL/DF_L1_skeleton/voxelize_point_set.h>
+
+#include <tbb/global_control.h>
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <iterator>
+#include <string>
+#include <vector>
+
+namespace DF = CGAL::DF_L1;
+using DF_L1_test::Point_3;
+using DF_L1_test::Variant;
+typedef CGAL::Exact_predicates_inexact_constructions_kernel Kernel;
+
+namespace {
+
+struct Volumetric_result
+{
+  DF::Distance_field<Kernel> field;
+  DF::Initial_skeleton<Kernel> initial;
+  double voxel_size = 0;
+};
+
+// The volumetric stages in the order the tool runs them.
+Volumetric_result run_volumetric_stages(const std::vector<Point_3>& points)
+{
+  const std::vector<bool> sparse = DF::flag_sparse_outliers(points);
+  std::vector<Point_3> kept;
+  for(std::size_t i = 0; i < points.size(); ++i)
+    if(!sparse[i])
+      kept.push_back(points[i]);
+  std::vector<Point_3> added;
+  DF::upsample_sparse_regions(kept, std::back_inserter(added));
+  kept.insert(kept.end(), added.begin(), added.end());
+  Volumetric_result r;
+  r.field = DF::compute_distance_field(DF::remove_outlier_voxels(DF::voxelize_point_set(kept)));
+  r.initial = DF::extract_initial_skeleton(r.field);
+  r.voxel_size = CGAL::to_double(r.field.voxel_size);
+  return r;
+}
+
+Volumetric_result run_on(const std::string& shape_name, Variant variant, unsigned seed)
+{
+  const DF_L1_test::Shape shape = DF_L1_test::shape_by_name(shape_name);
+  return run_volumetric_stages(DF_L1_test::make_sample(shape, variant, 20000, seed).points);
+}
+
+std::string describe(const std::string& name, Variant variant, unsigned seed, const DF::Skeleton_statistics& s)
+{
+  return name + " variant " + std::to_string(int(variant)) + " seed " + std::to_string(seed) + ": " +
+         std::to_string(s.components) + " components, " + std::to_string(s.cycles) + " cycles, " +
+         std::to_string(s.end_points) + " end points";
+}
+
+} // namespace
+
+TEST_CASE("initial skeleton: capsule, Y-junction and torus lie within 1.5 voxels of the true axis", "[initial]")
+{
+  for(const std::string name : {"capsule", "y_junction", "torus"})
+    for(unsigned seed : {1u, 2u})
+    {
+      const DF_L1_test::Shape shape = DF_L1_test::shape_by_name(name);
+      const Volumetric_result r = run_on(name, Variant::clean, seed);
+      const auto& g = r.initial.graph;
+      REQUIRE(boost::num_vertices(g) > 10);
+      double sum = 0, worst_far = 0, worst_near = 0;
+      for(std::size_t v = 0; v < boost::num_vertices(g); ++v)
+      {
+        const double to_axis = shape.distance_to_axis(g[v].point) / r.voxel_size;
+        sum += to_axis;
+        // Where tubes meet, the medial axis of their union bends away from the segments
+        // that make the true axis, over about the radius of the junction.
+        bool near_junction = false;
+        for(const DF_L1_test::Skeleton_node& node : shape.skeleton_nodes())
+          near_junction = near_junction ||
+                          (node.degree >= 3 && std::sqrt(CGAL::to_double(CGAL::squared_distance(node.point, g[v].point))) <
+                                                 -shape.signed_distance(node.point) + r.voxel_size);
+        (near_junction ? worst_near : worst_far) = (std::max)(near_junction ? worst_near : worst_far, to_axis);
+      }
+      INFO(name << " seed " << seed << ": mean " << sum / double(boost::num_vertices(g)) << ", max " << worst_far
+                << " (near a junction " << worst_near << ") voxels");
+      CHECK(worst_far <= 1.5);
+      CHECK(worst_near <= 2.5);
+      CHECK(sum / double(boost::num_vertices(g)) <= 0.75);
+      for(const Point_3& p : r.initial.points) // S, the ridge voxels, are inside the shape
+        CHECK(shape.signed_distance(p) < 0);
+    }
+}
+
+TEST_CASE("initial skeleton: right components, loops and end points on every shape", "[initial]")
+{
+  const std::vector<std::string> shapes = {"capsule", "y_junction", "torus", "figure_eight", "star",
+                                           "stick_figure", "branching_tree", "helix", "many_armed"};
+  for(Variant variant : {Variant::clean, Variant::uneven})
+    for(const std::string& name : shapes)
+    {
+      const DF_L1_test::Topology expected = DF_L1_test::shape_by_name(name).expected_topology();
+      const DF::Skeleton_statistics s = DF::skeleton_statistics(run_on(name, variant, 3).initial.graph);
+      INFO(describe(name, variant, 3, s));
+      CHECK(long(s.components) == expected.components);
+      CHECK(long(s.cycles) == expected.cycles);
+      CHECK(long(s.end_points) == expected.end_points);
+    }
+}
+
+TEST_CASE("initial skeleton: noisy capsule, Y-junction and torus keep their topology", "[initial]")
+{
+  for(const std::string name : {"capsule", "y_junction", "torus"})
+    for(unsigned seed : {4u, 5u})
+    {
+      const DF_L1_test::Topology expected = DF_L1_test::shape_by_name(name).expected_topology();
+      const DF::Skeleton_statistics s = DF::skeleton_statistics(run_on(name, Variant::noise, seed).initial.graph);
+      INFO(describe(name, Variant::noise, seed, s));
+      CHECK(s.components == 1);
+      CHECK(long(s.cycles) == expected.cycles); // the torus keeps exactly its one loop
+      CHECK(std::abs(long(s.end_points) - expected.end_points) <= 1);
+    }
+}
+
+TEST_CASE("initial skeleton: the same for 1 and 2 threads", "[initial][determinism]")
+{
+  const std::vector<Point_3> points =
+    DF_L1_test::make_sample(DF_L1_test::shape_by_name("branching_tree"), Variant::noise, 20000, 6).points;
+  const auto run_with = [&](int threads) {
+    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, std::size_t(threads));
+    return run_volumetric_stages(points);
+  };
+  const Volumetric_result one = run_with(1), two = run_with(2);
+  REQUIRE(one.initial.points == two.initial.points);
+  const auto& a = one.initial.graph;
+  const auto& b = two.initial.graph;
+  REQUIRE(boost::num_vertices(a) == boost::num_vertices(b));
+  REQUIRE(boost::num_edges(a) == boost::num_edges(b));
+  for(std::size_t v = 0; v < boost::num_vertices(a); ++v)
+  {
+    CHECK(a[v].point == b[v].point);
+    CHECK(boost::degree(v, a) == boost::degree(v, b));
+  }
+}
+
+TEST_CASE("voxel topology: simple voxels and loops of voxel sets", "[initial][topology]")
+{
+  using DF::internal::Neighbourhood;
+  const auto cell = [](int dx, int dy, int dz) { return Neighbourhood(1) << ((dz + 1) * 9 + (dy + 1) * 3 + dx + 1); };
+  CHECK_FALSE(DF::internal::is_simple(0));                                    // isolated voxel
+  CHECK(DF::internal::is_simple(cell(1, 0, 0)));                              // end of a curve
+  CHECK(DF::internal::is_simple(cell(1, 1, 1)));                              // end, diagonal neighbour
+  CHECK_FALSE(DF::internal::is_simple(cell(1, 0, 0) | cell(-1, 0, 0)));       // inside a curve
+  CHECK_FALSE(DF::internal::is_simple(cell(1, 1, 0) | cell(-1, -1, 1)));      // inside a diagonal curve
+  CHECK(DF::internal::is_simple(cell(1, 0, 0) | cell(1, 1, 0) | cell(0, 1, 0))); // corner of a square
+  Neighbourhood all = 0;
+  for(int c = 0; c < 27; ++c)
+    all |= c == 13 ? 0 : Neighbourhood(1) << c;
+  CHECK_FALSE(DF::internal::is_simple(all));                       // removal makes a cavity
+  CHECK(DF::internal::is_simple(all & ~cell(0, 0, 1)));            // on a flat face
+  // a ring of 8 voxels around the centre in the plane z = 0: removing the centre makes a tunnel
+  Neighbourhood disc = 0;
+  for(int dx = -1; dx <= 1; ++dx)
+    for(int dy = -1; dy <= 1; ++dy)
+      disc |= (dx || dy) ? cell(dx, dy, 0) : 0;
+  CHECK_FALSE(DF::internal::is_simple(disc));
+
+  DF::Grid_geometry<Kernel> grid;
+  grid.dims = {{10, 10, 10}};
+  std::vector<std::size_t> ring, block, line;
+  for(int i = 2; i <= 6; ++i)
+    for(int j = 2; j <= 6; ++j)
+    {
+      if(i == 2 || i == 6 || j == 2 || j == 6)
+        ring.push_back(grid.index(i, j, 4));
+      block.push_back(grid.index(i, j, 4));
+    }
+  for(int i = 1; i < 9; ++i)
+    line.push_back(grid.index(i, i / 2 + 1, 3));
+  std::sort(ring.begin(), ring.end());
+  std::sort(block.begin(), block.end());
+  std::sort(line.begin(), line.end());
+  CHECK(DF::internal::first_betti_number(grid, ring, 1, 0) == 1);
+  CHECK(DF::internal::first_betti_number(grid, block, 1, 0) == 0);
+  CHECK(DF::internal::first_betti_number(grid, line, 1, 0) == 0);
+  // The graph of the ring keeps its loop; the graph of the block loses every small cycle
+  // that the 26-adjacency makes between its voxels.
+  CHECK(DF::skeleton_statistics(DF::internal::voxel_curve_graph<Kernel>(grid, ring)).cycles == 1);
+  const DF::Skeleton_statistics filled = DF::skeleton_statistics(DF::internal::voxel_curve_graph<Kernel>(grid, block));
+  CHECK(filled.cycles == 0);
+  CHECK(filled.components == 1);
+  CHECK(DF::skeleton_statistics(DF::internal::voxel_curve_graph<Kernel>(grid, line)).cycles == 0);
+}
