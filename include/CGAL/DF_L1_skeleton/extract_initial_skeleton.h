@@ -68,22 +68,62 @@ std::vector<char> shape_volume(const Distance_field<Traits>& df)
   return in;
 }
 
+// Maxima of the distance field over blocks of 4x4x4 voxels, so that the maximum over a
+// large window costs a few block reads.
+class Block_maximum
+{
+public:
+  static constexpr int block = 4;
+
+  template <class Traits>
+  explicit Block_maximum(const Distance_field<Traits>& df)
+  {
+    for(int a = 0; a < 3; ++a)
+      dims_[a] = (df.dims[a] + block - 1) / block;
+    maxima_.assign(std::size_t(dims_[0]) * dims_[1] * dims_[2], 0.f);
+    for(int k = 0; k < df.dims[2]; ++k)
+      for(int j = 0; j < df.dims[1]; ++j)
+        for(int i = 0; i < df.dims[0]; ++i)
+        {
+          float& m = maxima_[index(i / block, j / block, k / block)];
+          m = (std::max)(m, df.values[df.index(i, j, k)]);
+        }
+  }
+
+  // The maximum over the blocks that meet the voxel box [lo, hi] (inclusive).
+  float over(const std::array<int, 3>& lo, const std::array<int, 3>& hi) const
+  {
+    std::array<int, 3> a, b;
+    for(int d = 0; d < 3; ++d)
+    {
+      a[d] = (std::max)(0, lo[d]) / block;
+      b[d] = (std::min)(dims_[d] * block - 1, hi[d]) / block;
+    }
+    float m = 0;
+    for(int k = a[2]; k <= b[2]; ++k)
+      for(int j = a[1]; j <= b[1]; ++j)
+        for(int i = a[0]; i <= b[0]; ++i)
+          m = (std::max)(m, maxima_[index(i, j, k)]);
+    return m;
+  }
+
+private:
+  std::size_t index(int i, int j, int k) const { return (std::size_t(k) * dims_[1] + j) * dims_[0] + i; }
+  std::array<int, 3> dims_;
+  std::vector<float> maxima_;
+};
+
 // Whether a skeleton voxel may end a curve: its depth is at least `ratio` times the
-// largest depth within its own depth (plus a voxel). The end of a real branch sits near
-// the centre of the ball that caps it, where the field peaks; the noise of the surface
-// raises ridge voxels a few voxels deep on the slope of a much deeper field, and a curve
-// ending there would be a spur.
+// largest depth within about twice its own (the blocks that meet that cube). The end of
+// a real branch sits near the centre of the ball that caps it, where the field peaks;
+// the noise of the surface raises ridge voxels a few voxels deep on the slope of a much
+// deeper field, and a curve ending there would be a spur.
 template <class Traits>
-bool is_deep_end(const Distance_field<Traits>& df, std::size_t v, double ratio)
+bool is_deep_end(const Distance_field<Traits>& df, const Block_maximum& maxima, std::size_t v, double ratio)
 {
   const std::array<int, 3> c = df.coordinates(v);
-  const int r = int(std::ceil(2 * df.values[v])) + 1;
-  float deepest = 0;
-  for(int k = (std::max)(0, c[2] - r); k <= (std::min)(df.dims[2] - 1, c[2] + r); ++k)
-    for(int j = (std::max)(0, c[1] - r); j <= (std::min)(df.dims[1] - 1, c[1] + r); ++j)
-      for(int i = (std::max)(0, c[0] - r); i <= (std::min)(df.dims[0] - 1, c[0] + r); ++i)
-        deepest = (std::max)(deepest, df.values[df.index(i, j, k)]);
-  return df.values[v] >= ratio * deepest;
+  const int r = int(std::ceil(2 * df.values[v]));
+  return df.values[v] >= ratio * maxima.over({{c[0] - r, c[1] - r, c[2] - r}}, {{c[0] + r, c[1] + r, c[2] + r}});
 }
 
 // Removes, repeatedly, the terminal branches shorter than `ratio` times the local
@@ -173,7 +213,8 @@ void prune_spurs(Skeleton_graph<Traits>& g, double ratio, double voxel_size)
 /// - it is thinned to curves without changing its topology (simple voxels only), in
 ///   the order of increasing distance, so the curves follow the ridge of the field; a
 ///   torus keeps its loop, a solid becomes a tree. A curve end is kept only at a voxel
-///   of S whose distance is at least 3/4 of the largest distance within twice its own:
+///   of S whose distance is at least 3/4 of the largest distance within about twice its
+///   own:
 ///   the end of a branch sits near the centre of the ball that caps it, while noise
 ///   raises ridge voxels on the slope of a deeper field;
 /// - the 26-adjacency graph of the curve voxels, without redundant diagonals and
@@ -263,11 +304,12 @@ Initial_skeleton<Traits> extract_initial_skeleton(const Distance_field<Traits>& 
 
   std::vector<char> curves = internal::shape_volume(field);
   std::vector<signed char> deep_end(field.size(), -1); // memo of is_deep_end
+  const internal::Block_maximum maxima(field);
   internal::thin_to_curves(field, field.values, curves, [&](std::size_t v) {
     if(!in[v])
       return false;
     if(deep_end[v] < 0)
-      deep_end[v] = internal::is_deep_end(field, v, end_depth_ratio);
+      deep_end[v] = internal::is_deep_end(field, maxima, v, end_depth_ratio);
     return bool(deep_end[v]);
   });
   std::vector<std::size_t> curve_voxels;

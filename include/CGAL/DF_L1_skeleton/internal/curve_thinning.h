@@ -14,32 +14,32 @@ namespace CGAL {
 namespace DF_L1 {
 namespace internal {
 
-// The 26-neighbourhood of voxel v in the set `in`; voxels outside the grid are not in it.
+// Linear-index offsets of the 27 cells of a 3x3x3 neighbourhood (cell 13 is the centre).
 template <class Geometry>
-Neighbourhood neighbourhood_in(const Geometry& grid, const std::vector<char>& in, std::size_t v)
+std::array<std::ptrdiff_t, 27> neighbourhood_offsets(const Geometry& grid)
 {
-  const std::array<int, 3> c = grid.coordinates(v);
-  Neighbourhood n = 0;
-  const bool inside = c[0] > 0 && c[1] > 0 && c[2] > 0 && c[0] + 1 < grid.dims[0] &&
-                      c[1] + 1 < grid.dims[1] && c[2] + 1 < grid.dims[2];
-  const std::ptrdiff_t sx = 1, sy = grid.dims[0], sz = std::ptrdiff_t(grid.dims[0]) * grid.dims[1];
+  std::array<std::ptrdiff_t, 27> offsets;
+  const std::ptrdiff_t sy = grid.dims[0], sz = std::ptrdiff_t(grid.dims[0]) * grid.dims[1];
   for(int cell = 0; cell < 27; ++cell)
-  {
-    const int dx = cell % 3 - 1, dy = (cell / 3) % 3 - 1, dz = cell / 9 - 1;
-    if(cell == 13 || (!inside && !grid.contains(c[0] + dx, c[1] + dy, c[2] + dz)))
-      continue;
-    if(in[std::size_t(std::ptrdiff_t(v) + dx * sx + dy * sy + dz * sz)])
+    offsets[cell] = (cell % 3 - 1) + ((cell / 3) % 3 - 1) * sy + (cell / 9 - 1) * sz;
+  return offsets;
+}
+
+// The 26-neighbourhood of voxel v in the set `in`; v must not be on the outer layer of
+// the grid.
+inline Neighbourhood neighbourhood_in(const std::vector<char>& in, std::size_t v,
+                                      const std::array<std::ptrdiff_t, 27>& offsets)
+{
+  Neighbourhood n = 0;
+  for(int cell = 0; cell < 27; ++cell)
+    if(cell != 13 && in[std::size_t(std::ptrdiff_t(v) + offsets[cell])])
       n |= Neighbourhood(1) << cell;
-  }
   return n;
 }
 
 inline int neighbour_count(Neighbourhood n)
 {
-  int count = 0;
-  for(n &= ~(Neighbourhood(1) << 13); n; n &= n - 1)
-    ++count;
-  return count;
+  return bit_count(n & ~(Neighbourhood(1) << 13));
 }
 
 // Thins the voxel set `in` to 26-connected curves without changing its topology
@@ -52,45 +52,71 @@ inline int neighbour_count(Neighbourhood n)
 // that keeps a tied ridge two voxels wide from being eaten from one end, which a plain
 // sequential order would do. A curve end (one neighbour) is kept only when
 // `keeps_end(v)` says so: ends elsewhere are bumps of the surface, not branches.
+// Voxels on the outer layer of the grid are dropped from the set first (a padded grid
+// has none), so that neighbourhoods need no bounds checks.
 template <class Geometry, class EndPredicate>
 void thin_to_curves(const Geometry& grid, const std::vector<float>& depth, std::vector<char>& in,
                     const EndPredicate& keeps_end)
 {
   std::vector<std::size_t> order;
   for(std::size_t v = 0; v < in.size(); ++v)
-    if(in[v])
+  {
+    if(!in[v])
+      continue;
+    const std::array<int, 3> c = grid.coordinates(v);
+    if(c[0] == 0 || c[1] == 0 || c[2] == 0 || c[0] + 1 == grid.dims[0] || c[1] + 1 == grid.dims[1] ||
+       c[2] + 1 == grid.dims[2])
+      in[v] = 0;
+    else
       order.push_back(v);
+  }
   std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
     return depth[a] != depth[b] ? depth[a] < depth[b] : a < b;
   });
-  const int faces[6][3] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
-  std::vector<std::size_t> pending; // voxels of the processed slices still in the set
+  const std::array<std::ptrdiff_t, 27> offsets = neighbourhood_offsets(grid);
+  const int face_cells[6] = {14, 12, 16, 10, 22, 4};
+  const auto deeper = [&](std::size_t a, std::size_t b) {
+    return depth[a] != depth[b] ? depth[a] < depth[b] : a < b;
+  };
+  // Only a voxel whose neighbourhood changed can become removable: the work list holds
+  // the new voxels of the slice and the neighbours of the voxels just removed.
+  std::vector<char> listed(in.size(), 0);
+  std::vector<std::size_t> work, next_work;
   std::size_t next = 0;
-  for(double slice = 0.5; next < order.size() || slice == 0.5; slice += 0.5)
+  for(double slice = 0.5; next < order.size(); slice += 0.5)
   {
-    while(next < order.size() && depth[order[next]] <= slice)
-      pending.push_back(order[next++]);
-    for(bool changed = true; changed;)
+    for(; next < order.size() && depth[order[next]] <= slice; ++next)
     {
-      changed = false;
+      listed[order[next]] = 1;
+      work.push_back(order[next]);
+    }
+    while(!work.empty())
+    {
+      std::sort(work.begin(), work.end(), deeper);
+      for(std::size_t v : work)
+        listed[v] = 0;
       for(int d = 0; d < 6; ++d)
-        for(std::size_t v : pending)
+        for(std::size_t v : work)
         {
-          if(!in[v])
-            continue;
-          const std::array<int, 3> c = grid.coordinates(v);
-          const int i = c[0] + faces[d][0], j = c[1] + faces[d][1], k = c[2] + faces[d][2];
-          if(grid.contains(i, j, k) && in[grid.index(i, j, k)])
-            continue; // not on the border facing d
-          const Neighbourhood n = neighbourhood_in(grid, in, v);
+          if(!in[v] || in[std::size_t(std::ptrdiff_t(v) + offsets[face_cells[d]])])
+            continue; // gone, or not on the border facing d
+          const Neighbourhood n = neighbourhood_in(in, v, offsets);
           const int count = neighbour_count(n);
           if(count == 0 || (count == 1 && keeps_end(v)) || !is_simple(n))
             continue;
           in[v] = 0;
-          changed = true;
+          for(int cell = 0; cell < 27; ++cell)
+          {
+            const std::size_t w = std::size_t(std::ptrdiff_t(v) + offsets[cell]);
+            if(in[w] && !listed[w] && depth[w] <= slice)
+            {
+              listed[w] = 1;
+              next_work.push_back(w);
+            }
+          }
         }
-      pending.erase(std::remove_if(pending.begin(), pending.end(), [&](std::size_t v) { return !in[v]; }),
-                    pending.end());
+      work.swap(next_work);
+      next_work.clear();
     }
   }
 }

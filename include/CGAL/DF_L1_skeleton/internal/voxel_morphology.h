@@ -11,61 +11,75 @@ namespace CGAL {
 namespace DF_L1 {
 namespace internal {
 
-// Dilation (value = 1) or erosion (value = 0) of the flags by the 3x3x3 cube: the cube is
+// Dilation (dilate = true) or erosion of the flags by the 3x3x3 cube: the cube is
 // separable, so three passes of a 3-wide window along x, y and z. Voxels outside the grid
 // count as 0.
 inline void cube_filter(std::vector<char>& flags, const std::array<int, 3>& dims, bool dilate)
 {
   const std::size_t stride[3] = {1, std::size_t(dims[0]), std::size_t(dims[0]) * dims[1]};
-  std::vector<char> from;
+  std::vector<char> from(flags.size());
   for(int axis = 0; axis < 3; ++axis)
   {
-    from = flags;
-    for(std::size_t v = 0; v < flags.size(); ++v)
-    {
-      const int position = int((v / stride[axis]) % std::size_t(dims[axis]));
-      const char before = position > 0 ? from[v - stride[axis]] : 0;
-      const char after = position + 1 < dims[axis] ? from[v + stride[axis]] : 0;
-      flags[v] = dilate ? (from[v] | before | after) : (from[v] & before & after);
-    }
+    from.swap(flags);
+    const std::size_t step = stride[axis];
+    for(int k = 0; k < dims[2]; ++k)
+      for(int j = 0; j < dims[1]; ++j)
+      {
+        const int position_jk[3] = {0, j, k};
+        const std::size_t row = (std::size_t(k) * dims[1] + j) * dims[0];
+        for(int i = 0; i < dims[0]; ++i)
+        {
+          const std::size_t v = row + i;
+          const int position = axis == 0 ? i : position_jk[axis];
+          const char before = position > 0 ? from[v - step] : 0;
+          const char after = position + 1 < dims[axis] ? from[v + step] : 0;
+          flags[v] = dilate ? (from[v] | before | after) : (from[v] & before & after);
+        }
+      }
   }
 }
 
 // Adds to `in` the voxels that no 6-connected path of voxels outside `in` joins to a
-// voxel of `outside` (cavities enclosed by the set).
+// voxel of `outside` (the cavities the set encloses). Only the voxels in neither set can
+// be in a cavity, so only they are walked.
 inline void fill_cavities(std::vector<char>& in, const std::vector<char>& outside, const std::array<int, 3>& dims)
 {
-  std::vector<char> reached(in.size(), 0);
-  std::vector<std::size_t> stack;
-  for(std::size_t v = 0; v < in.size(); ++v)
-    if(outside[v] && !in[v])
-    {
-      reached[v] = 1;
-      stack.push_back(v);
-    }
   const std::size_t stride[3] = {1, std::size_t(dims[0]), std::size_t(dims[0]) * dims[1]};
-  while(!stack.empty())
+  std::vector<char> seen(in.size(), 0);
+  std::vector<std::size_t> component;
+  for(std::size_t seed = 0; seed < in.size(); ++seed)
   {
-    const std::size_t v = stack.back();
-    stack.pop_back();
-    for(int axis = 0; axis < 3; ++axis)
+    if(in[seed] || outside[seed] || seen[seed])
+      continue;
+    component.assign(1, seed);
+    seen[seed] = 1;
+    bool enclosed = true;
+    for(std::size_t head = 0; head < component.size(); ++head)
     {
-      const int position = int((v / stride[axis]) % std::size_t(dims[axis]));
-      for(int side = -1; side <= 1; side += 2)
-      {
-        if(position + side < 0 || position + side >= dims[axis])
-          continue;
-        const std::size_t w = side < 0 ? v - stride[axis] : v + stride[axis];
-        if(!in[w] && !reached[w])
+      const std::size_t v = component[head];
+      const std::size_t coordinate[3] = {v % stride[1], (v / stride[1]) % std::size_t(dims[1]), v / stride[2]};
+      for(int axis = 0; axis < 3; ++axis)
+        for(int side = -1; side <= 1; side += 2)
         {
-          reached[w] = 1;
-          stack.push_back(w);
+          if((side < 0 && coordinate[axis] == 0) || (side > 0 && coordinate[axis] + 1 == std::size_t(dims[axis])))
+          {
+            enclosed = false; // the grid border
+            continue;
+          }
+          const std::size_t w = side < 0 ? v - stride[axis] : v + stride[axis];
+          if(outside[w])
+            enclosed = false;
+          else if(!in[w] && !seen[w])
+          {
+            seen[w] = 1;
+            component.push_back(w);
+          }
         }
-      }
     }
+    if(enclosed)
+      for(std::size_t v : component)
+        in[v] = 1;
   }
-  for(std::size_t v = 0; v < in.size(); ++v)
-    in[v] = in[v] || !reached[v];
 }
 
 } // namespace internal

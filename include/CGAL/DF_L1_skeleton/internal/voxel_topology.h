@@ -49,15 +49,28 @@ inline Neighbourhood cells_up_to_norm(int norm)
   return m;
 }
 
-inline int lowest_bit(Neighbourhood m)
+inline int lowest_bit(Neighbourhood m) // m != 0
 {
+#if defined(__GNUC__) || defined(__clang__)
+  return __builtin_ctz(m);
+#else
   int b = 0;
-  while(!(m & 1u))
-  {
-    m >>= 1;
+  for(; !(m & 1u); m >>= 1)
     ++b;
-  }
   return b;
+#endif
+}
+
+inline int bit_count(Neighbourhood m)
+{
+#if defined(__GNUC__) || defined(__clang__)
+  return __builtin_popcount(m);
+#else
+  int count = 0;
+  for(; m; m &= m - 1)
+    ++count;
+  return count;
+#endif
 }
 
 // Number of connected components of the cells of `members` for the adjacency `adjacency`;
