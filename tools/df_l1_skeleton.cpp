@@ -7,6 +7,7 @@
 #include "options.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/DF_L1_skeleton.h>
 #include <CGAL/DF_L1_skeleton/IO/read_point_cloud.h>
 #include <CGAL/DF_L1_skeleton/IO/write_skeleton.h>
 #include <CGAL/DF_L1_skeleton/IO/write_svg_preview.h>
@@ -256,78 +257,56 @@ int run(const Settings& s)
   const auto cloud = clock.run("read", [&] { return DF::read_point_cloud<Kernel>(s.input); });
   const std::vector<Point_3>& points = cloud.points;
 
-  // Every derived default is computed here and passed explicitly, so that the report
-  // states exactly what was used.
-  const CGAL::Bbox_3 box = DF::internal::checked_bbox(points, CGAL::Identity_property_map<Point_3>(), s.input.c_str());
-  const double diagonal = DF::internal::diagonal(box);
-  if(!(DF::internal::longest_side(box) > 0))
-    throw DF::Invalid_input(s.input + ": all " + std::to_string(points.size()) +
-                            " points coincide; there is no shape to skeletonize");
-  const double initial_voxel_size = std::isnan(s.initial_voxel_size) ? diagonal / 9 : s.initial_voxel_size;
-  const double upsampling_radius =
-    std::isnan(s.upsampling_radius) ? 3 * diagonal / std::cbrt(double(points.size())) : s.upsampling_radius;
-
-  // Scattered outliers go before voxelization; the voxel test catches the clusters.
-  const std::vector<bool> sparse_flags = clock.run("outlier_points", [&] { return DF::flag_sparse_outliers(points); });
-  std::vector<Point_3> kept;
-  for(std::size_t i = 0; i < points.size(); ++i)
-    if(!sparse_flags[i])
-      kept.push_back(points[i]);
-  std::vector<Point_3> added;
-  if(s.upsampling)
-    clock.run("upsampling", [&] {
-      DF::upsample_sparse_regions(kept, std::back_inserter(added),
-                                  params::upsampling_neighbors(s.upsampling_neighbors,
-                                  params::upsampling_radius(upsampling_radius,
-                                  params::voxel_resolution(s.voxel_resolution))));
+  // The library resolves the derived defaults; the report states what it used.
+  CGAL::DF_L1_skeletonization<Kernel> skeletonization(
+    points, params::voxel_resolution(s.voxel_resolution,
+            params::exterior_propagation_steps(s.exterior_propagation_steps,
+            params::upsampling(s.upsampling,
+            params::upsampling_neighbors(s.upsampling_neighbors,
+            params::thinning_coefficient(s.thinning_coefficient,
+            params::spur_length_ratio(s.spur_length_ratio)))))));
+  if(!std::isnan(s.initial_voxel_size))
+    skeletonization.set_initial_voxel_size(s.initial_voxel_size);
+  if(!std::isnan(s.upsampling_radius))
+    skeletonization.set_upsampling_radius(s.upsampling_radius);
+  if(s.outlier_component_size >= 0)
+    skeletonization.set_outlier_component_size(s.outlier_component_size);
+  const auto stage = [&](const char* name, void (CGAL::DF_L1_skeletonization<Kernel>::*f)()) {
+    clock.run(name, [&] {
+      (skeletonization.*f)();
       return 0;
     });
-  std::vector<Point_3> all_points = kept;
-  all_points.insert(all_points.end(), added.begin(), added.end());
-
-  const auto raw_grid = clock.run("voxelization", [&] {
-    return DF::voxelize_point_set(all_points, params::voxel_resolution(s.voxel_resolution,
-                                              params::initial_voxel_size(initial_voxel_size,
-                                              params::exterior_propagation_steps(s.exterior_propagation_steps))));
-  });
-  const int longest = (std::max)({raw_grid.dims[0], raw_grid.dims[1], raw_grid.dims[2]});
-  const int outlier_size = s.outlier_component_size >= 0 ? s.outlier_component_size : (std::max)(3, longest / 10);
-  DF::Outlier_voxel_statistics outlier_stats;
-  const auto grid = clock.run("outliers", [&] {
-    return DF::remove_outlier_voxels(raw_grid, params::outlier_component_size(outlier_size), &outlier_stats);
-  });
-  std::vector<bool> outlier_flags = DF::flag_outlier_points(points, grid);
-  std::size_t outlier_points = 0, sparse_outliers = 0;
-  for(std::size_t i = 0; i < points.size(); ++i)
-  {
-    sparse_outliers += sparse_flags[i];
-    outlier_flags[i] = outlier_flags[i] || sparse_flags[i];
-    outlier_points += outlier_flags[i];
-  }
-
-  std::unique_ptr<DF::Distance_field<Kernel>> field;
+  };
+  typedef CGAL::DF_L1_skeletonization<Kernel> Skeletonization;
+  // Scattered outliers go before voxelization; the voxel test catches the clusters.
+  stage("outlier_points", &Skeletonization::flag_outliers);
+  if(s.upsampling)
+    stage("upsampling", &Skeletonization::upsample);
+  stage("voxelization", &Skeletonization::voxelize);
+  stage("outliers", &Skeletonization::remove_outlier_voxels);
+  const DF::Voxel_grid<Kernel>& grid = skeletonization.voxel_grid();
+  const DF::Distance_field<Kernel>* field = nullptr;
   if(s.stage != "voxels")
-    field = std::make_unique<DF::Distance_field<Kernel>>(
-      clock.run("distance", [&] { return DF::compute_distance_field(grid); }));
-  std::unique_ptr<DF::Initial_skeleton<Kernel>> initial;
+  {
+    stage("distance", &Skeletonization::compute_distance_field);
+    field = &skeletonization.distance_field();
+  }
+  const DF::Initial_skeleton<Kernel>* initial = nullptr;
   if(s.stage == "initial")
   {
-    initial = std::make_unique<DF::Initial_skeleton<Kernel>>(clock.run("initial", [&] {
-      return DF::extract_initial_skeleton(*field, params::thinning_coefficient(s.thinning_coefficient,
-                                                   params::spur_length_ratio(s.spur_length_ratio)));
-    }));
+    stage("initial", &Skeletonization::extract_initial_skeleton);
+    initial = &skeletonization.initial_skeleton();
     if(boost::num_vertices(initial->graph) == 0)
       throw DF::Invalid_input(s.input + ": no skeleton: the points enclose no volume at voxel resolution " +
                               std::to_string(s.voxel_resolution) +
                               " (flat, linear or too sparse input; try --stage voxels to look at the voxels)");
-    DF::assign_points_to_skeleton(points, outlier_flags, initial->graph);
   }
 
   clock.run("write", [&] {
     if(initial)
       DF::write_skeleton(s.output, initial->graph);
     else
-      write_voxels(s.output, grid, field.get());
+      write_voxels(s.output, grid, field);
     if(!s.preview.empty())
     {
       std::vector<DF::Preview_panel<Kernel>> rows;
@@ -350,30 +329,30 @@ int run(const Settings& s)
     parameters.text("stage", s.stage)
       .number("threads", s.threads > 0 ? s.threads : double(tbb::this_task_arena::max_concurrency()))
       .number("seed", double(s.seed))
-      .number("bbox_diagonal", diagonal)
-      .boolean("upsampling", s.upsampling)
-      .number("upsampling_neighbors", s.upsampling_neighbors)
-      .number("upsampling_radius", upsampling_radius)
-      .number("voxel_resolution", s.voxel_resolution)
-      .number("initial_voxel_size", initial_voxel_size)
+      .number("bbox_diagonal", skeletonization.bbox_diagonal())
+      .boolean("upsampling", skeletonization.upsampling())
+      .number("upsampling_neighbors", skeletonization.upsampling_neighbors())
+      .number("upsampling_radius", skeletonization.upsampling_radius())
+      .number("voxel_resolution", skeletonization.voxel_resolution())
+      .number("initial_voxel_size", skeletonization.initial_voxel_size())
       .number("initial_voxel_size_used", grid.levels.front().voxel_size)
       .number("refinement_levels", double(grid.levels.size() - 1))
       .number("voxel_size", voxel_size)
-      .number("exterior_propagation_steps", s.exterior_propagation_steps)
-      .number("outlier_component_size", outlier_size);
+      .number("exterior_propagation_steps", skeletonization.exterior_propagation_steps())
+      .number("outlier_component_size", skeletonization.outlier_component_size());
     if(initial)
-      parameters.number("thinning_coefficient", s.thinning_coefficient)
+      parameters.number("thinning_coefficient", skeletonization.thinning_coefficient())
         .raw("thinning_parameters", "[" + std::to_string(initial->thinning_parameters[0] * voxel_size) + ", " +
                                      std::to_string(initial->thinning_parameters[1] * voxel_size) + ", " +
                                      std::to_string(initial->thinning_parameters[2] * voxel_size) + "]")
-        .number("spur_length_ratio", s.spur_length_ratio);
+        .number("spur_length_ratio", skeletonization.spur_length_ratio());
     Json_object counts;
     counts.number("input_points", double(points.size()))
-      .number("added_points", double(added.size()))
-      .number("outlier_points", double(outlier_points))
-      .number("sparse_outlier_points", double(sparse_outliers))
-      .number("outlier_clusters", double(outlier_stats.components_removed))
-      .number("shape_components", double(outlier_stats.components_kept))
+      .number("added_points", double(skeletonization.added_points().size()))
+      .number("outlier_points", double(skeletonization.number_of_outliers()))
+      .number("sparse_outlier_points", double(skeletonization.number_of_sparse_outliers()))
+      .number("outlier_clusters", double(skeletonization.outlier_voxel_statistics().components_removed))
+      .number("shape_components", double(skeletonization.outlier_voxel_statistics().components_kept))
       .raw("grid", "[" + std::to_string(grid.dims[0]) + ", " + std::to_string(grid.dims[1]) + ", " +
                      std::to_string(grid.dims[2]) + "]")
       .number("boundary_voxels", double(grid.count(DF::Voxel_label::BOUNDARY)))

@@ -154,14 +154,13 @@ void prune_spurs(Skeleton_graph<Traits>& g, double ratio, double voxel_size)
       }
       if(boost::degree(current, g) < 3)
       {
-        // An isolated curve: noise of the field near the surface unless it is longer
-        // than the local radius (a separate part of the shape).
+        // A whole component: the skeleton of a separate part (a ball gives a point or a
+        // short curve), unless it is shallower than two voxels, a fold of the surface.
         double max_radius = 0;
         for(vertex v : chain)
           max_radius = (std::max)(max_radius, CGAL::to_double(g[v].radius));
-        if(boost::degree(current, g) == 1)
-          length += std::sqrt(CGAL::to_double(CGAL::squared_distance(g[previous].point, g[current].point)));
-        if(boost::degree(current, g) == 1 && length < max_radius)
+        max_radius = (std::max)(max_radius, CGAL::to_double(g[current].radius));
+        if(boost::degree(current, g) == 1 && max_radius < 2 * voxel_size)
         {
           chain.push_back(current);
           for(vertex v : chain)

@@ -1,0 +1,331 @@
+// Copyright (c) 2026 DF_L1_skeleton contributors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+#ifndef CGAL_DF_L1_SKELETON_H
+#define CGAL_DF_L1_SKELETON_H
+
+/// \file DF_L1_skeleton.h
+/// The public entry of the package: the `DF_L1_skeletonization` class, which runs the
+/// stages of the method one by one and keeps every intermediate result.
+
+#include <CGAL/DF_L1_skeleton/Skeleton_graph.h>
+#include <CGAL/DF_L1_skeleton/assign_points_to_skeleton.h>
+#include <CGAL/DF_L1_skeleton/distance_field.h>
+#include <CGAL/DF_L1_skeleton/errors.h>
+#include <CGAL/DF_L1_skeleton/extract_initial_skeleton.h>
+#include <CGAL/DF_L1_skeleton/flag_sparse_outliers.h>
+#include <CGAL/DF_L1_skeleton/internal/point_range.h>
+#include <CGAL/DF_L1_skeleton/named_parameters.h>
+#include <CGAL/DF_L1_skeleton/remove_outlier_voxels.h>
+#include <CGAL/DF_L1_skeleton/skeleton_statistics.h>
+#include <CGAL/DF_L1_skeleton/upsample_sparse_regions.h>
+#include <CGAL/DF_L1_skeleton/voxelize_point_set.h>
+
+#include <CGAL/Named_function_parameters.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/tags.h>
+
+#include <cmath>
+#include <iterator>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+
+/// \ingroup PkgDFL1SkeletonRef
+/// Computes the curve skeleton of a point cloud with the distance-field guided
+/// L1-median method, one stage at a time, like `CGAL::Mean_curvature_flow_skeletonization`.
+///
+/// The data flows one way: points, outlier flags and upsampling, voxel grid, distance
+/// field, initial skeleton. Each stage function runs the stages before it if they have
+/// not run yet, so a researcher can stop after any of them and look at its result, and
+/// a user can call the last one alone. Every length parameter left unset derives from
+/// the input (the diagonal d_bb of its bounding box, or the voxel size), so a scaled
+/// cloud gives a scaled result; the getters return the values actually used.
+///
+/// \tparam Traits a model of `Kernel`
+/// \tparam ConcurrencyTag `CGAL::Sequential_tag`, `CGAL::Parallel_tag` or
+///         `CGAL::Parallel_if_available_tag`; results do not depend on the number of threads
+template <class Traits, class ConcurrencyTag = CGAL::Parallel_if_available_tag>
+class DF_L1_skeletonization
+{
+public:
+  /// \name Types
+  /// @{
+  typedef typename Traits::Point_3 Point;                   ///< point type
+  typedef DF_L1::Skeleton_graph<Traits> Skeleton;           ///< the skeleton, a `boost::adjacency_list`
+  typedef DF_L1::Voxel_grid<Traits> Voxel_grid;             ///< labelled voxels
+  typedef DF_L1::Distance_field<Traits> Distance_field;     ///< distance of every voxel
+  typedef DF_L1::Initial_skeleton<Traits> Initial_skeleton; ///< skeleton voxels and their graph
+  /// @}
+
+  /// Copies the points and reads the parameters.
+  ///
+  /// \tparam PointRange a model of `ConstRange`; its value type is the key type of the point map
+  /// \param points the input points; normals are not needed
+  /// \param np an optional sequence of named parameters among `point_map` and the
+  ///        parameters of the stages: `voxel_resolution`, `initial_voxel_size`,
+  ///        `exterior_propagation_steps`, `upsampling`, `upsampling_neighbors`,
+  ///        `upsampling_radius`, `outlier_component_size`, `thinning_coefficient`,
+  ///        `spur_length_ratio` (see `voxelize_point_set()`, `upsample_sparse_regions()`,
+  ///        `remove_outlier_voxels()` and `extract_initial_skeleton()` for their meaning
+  ///        and defaults)
+  /// \throws DF_L1::Invalid_input if the range is empty, holds a non-finite coordinate,
+  ///         all its points coincide, or a parameter is out of range
+  template <class PointRange, class NamedParameters = parameters::Default_named_parameters>
+  explicit DF_L1_skeletonization(const PointRange& points, const NamedParameters& np = parameters::default_values())
+  {
+    using parameters::choose_parameter;
+    using parameters::get_parameter;
+    typedef Point_set_processing_3_np_helper<const PointRange, NamedParameters> NP_helper;
+    const auto point_map = NP_helper::get_const_point_map(points, np);
+    for(const auto& p : points)
+      points_.push_back(get(point_map, p));
+    const CGAL::Bbox_3 box = DF_L1::internal::checked_bbox(points_, CGAL::Identity_property_map<Point>(), "skeletonization");
+    if(!(DF_L1::internal::longest_side(box) > 0))
+      throw DF_L1::Invalid_input("skeletonization: all " + std::to_string(points_.size()) +
+                                 " points coincide; there is no shape to skeletonize");
+    diagonal_ = DF_L1::internal::diagonal(box);
+
+    voxel_resolution_ = DF_L1::internal::voxel_resolution(np, "skeletonization");
+    initial_voxel_size_ = choose_parameter(get_parameter(np, internal_np::df_l1_initial_voxel_size), diagonal_ / 9);
+    exterior_propagation_steps_ = choose_parameter(get_parameter(np, internal_np::df_l1_exterior_propagation), 1);
+    upsampling_ = choose_parameter(get_parameter(np, internal_np::df_l1_upsampling), true);
+    upsampling_neighbors_ = choose_parameter(get_parameter(np, internal_np::df_l1_upsampling_neighbors), 5);
+    upsampling_radius_ = choose_parameter(get_parameter(np, internal_np::df_l1_upsampling_radius),
+                                          3 * diagonal_ / std::cbrt(double(points_.size())));
+    outlier_component_size_ = choose_parameter(get_parameter(np, internal_np::df_l1_outlier_component_size), -1);
+    outlier_component_size_set_ = outlier_component_size_ >= 0;
+    if(!outlier_component_size_set_ && !parameters::is_default_parameter<NamedParameters, internal_np::df_l1_outlier_component_size_t>::value)
+      throw DF_L1::Invalid_input("skeletonization: outlier_component_size must not be negative");
+    thinning_coefficient_ = choose_parameter(get_parameter(np, internal_np::df_l1_thinning_coefficient), 0.86);
+    spur_length_ratio_ = choose_parameter(get_parameter(np, internal_np::df_l1_spur_length), 1.0);
+    check_parameters();
+  }
+
+  /// \name Stages
+  /// Each runs the stages before it when they have not run yet, and does nothing when
+  /// it has already run.
+  /// @{
+
+  /// Flags the scattered outliers (`flag_sparse_outliers()`).
+  void flag_outliers()
+  {
+    if(!sparse_outliers_.empty())
+      return;
+    sparse_outliers_ = DF_L1::flag_sparse_outliers<ConcurrencyTag>(points_);
+    sparse_outlier_count_ = 0;
+    for(bool b : sparse_outliers_)
+      sparse_outlier_count_ += b;
+  }
+
+  /// Adds points in the sparse regions of the kept points (`upsample_sparse_regions()`),
+  /// unless upsampling is off.
+  void upsample()
+  {
+    if(upsampled_)
+      return;
+    flag_outliers();
+    if(upsampling_)
+    {
+      const std::vector<Point> kept = kept_points();
+      DF_L1::upsample_sparse_regions<ConcurrencyTag>(
+        kept, std::back_inserter(added_points_),
+        parameters::upsampling_neighbors(upsampling_neighbors_,
+        parameters::upsampling_radius(upsampling_radius_,
+        parameters::voxel_resolution(voxel_resolution_))));
+    }
+    upsampled_ = true;
+  }
+
+  /// Voxelizes the kept and added points (`voxelize_point_set()`).
+  void voxelize()
+  {
+    if(raw_grid_)
+      return;
+    upsample();
+    std::vector<Point> all = kept_points();
+    all.insert(all.end(), added_points_.begin(), added_points_.end());
+    raw_grid_ = std::make_unique<Voxel_grid>(DF_L1::voxelize_point_set<ConcurrencyTag>(
+      all, parameters::voxel_resolution(voxel_resolution_,
+           parameters::initial_voxel_size(initial_voxel_size_,
+           parameters::exterior_propagation_steps(exterior_propagation_steps_)))));
+  }
+
+  /// Removes the outlier voxels (`remove_outlier_voxels()`) and flags their points.
+  void remove_outlier_voxels()
+  {
+    if(grid_)
+      return;
+    voxelize();
+    const int longest = (std::max)({raw_grid_->dims[0], raw_grid_->dims[1], raw_grid_->dims[2]});
+    if(!outlier_component_size_set_)
+      outlier_component_size_ = (std::max)(3, longest / 10);
+    grid_ = std::make_unique<Voxel_grid>(DF_L1::remove_outlier_voxels(
+      *raw_grid_, parameters::outlier_component_size(outlier_component_size_), &outlier_voxel_statistics_));
+    outliers_ = DF_L1::flag_outlier_points(points_, *grid_);
+    outlier_count_ = 0;
+    for(std::size_t i = 0; i < points_.size(); ++i)
+    {
+      outliers_[i] = outliers_[i] || sparse_outliers_[i];
+      outlier_count_ += outliers_[i];
+    }
+  }
+
+  /// Computes the distance field of the voxels (`compute_distance_field()`).
+  void compute_distance_field()
+  {
+    if(field_)
+      return;
+    remove_outlier_voxels();
+    field_ = std::make_unique<Distance_field>(DF_L1::compute_distance_field<ConcurrencyTag>(*grid_));
+  }
+
+  /// Extracts the initial skeleton (`extract_initial_skeleton()`) and assigns every
+  /// non-outlier input point to its nearest vertex of the graph.
+  void extract_initial_skeleton()
+  {
+    if(initial_)
+      return;
+    compute_distance_field();
+    initial_ = std::make_unique<Initial_skeleton>(DF_L1::extract_initial_skeleton(
+      *field_, parameters::thinning_coefficient(thinning_coefficient_,
+               parameters::spur_length_ratio(spur_length_ratio_))));
+    DF_L1::assign_points_to_skeleton(points_, outliers_, initial_->graph);
+  }
+  /// @}
+
+  /// \name Results
+  /// Each runs the stages it needs.
+  /// @{
+  /// the input points, in input order
+  const std::vector<Point>& input_points() const { return points_; }
+  /// one flag per input point: scattered outliers and points of outlier voxels
+  const std::vector<bool>& outlier_flags() { remove_outlier_voxels(); return outliers_; }
+  /// number of input points flagged as outliers
+  std::size_t number_of_outliers() { remove_outlier_voxels(); return outlier_count_; }
+  /// number of input points flagged by `flag_sparse_outliers()` alone
+  std::size_t number_of_sparse_outliers() { flag_outliers(); return sparse_outlier_count_; }
+  /// the points added in sparse regions
+  const std::vector<Point>& added_points() { upsample(); return added_points_; }
+  /// the voxels after outlier removal
+  const Voxel_grid& voxel_grid() { remove_outlier_voxels(); return *grid_; }
+  /// what the outlier voxel removal found
+  const DF_L1::Outlier_voxel_statistics& outlier_voxel_statistics() { remove_outlier_voxels(); return outlier_voxel_statistics_; }
+  /// the distance field
+  const Distance_field& distance_field() { compute_distance_field(); return *field_; }
+  /// the initial skeleton: the skeleton voxels S and a curve graph through them
+  const Initial_skeleton& initial_skeleton() { extract_initial_skeleton(); return *initial_; }
+  /// @}
+
+  /// \name Parameters in use
+  /// Derived defaults are resolved: these are the values the stages use.
+  /// @{
+  double bbox_diagonal() const { return diagonal_; }                      ///< d_bb
+  int voxel_resolution() const { return voxel_resolution_; }              ///< V
+  double initial_voxel_size() const { return initial_voxel_size_; }       ///< s0 before rounding
+  int exterior_propagation_steps() const { return exterior_propagation_steps_; }
+  bool upsampling() const { return upsampling_; }
+  int upsampling_neighbors() const { return upsampling_neighbors_; }
+  double upsampling_radius() const { return upsampling_radius_; }
+  /// the largest extent of a removable outlier cluster, in voxels (derived from the grid
+  /// once the voxels exist)
+  int outlier_component_size() { remove_outlier_voxels(); return outlier_component_size_; }
+  double thinning_coefficient() const { return thinning_coefficient_; }
+  double spur_length_ratio() const { return spur_length_ratio_; }
+  /// @}
+
+  /// \name Setting derived parameters
+  /// Each discards the results of the stages that depend on the parameter.
+  /// @{
+  /// sets s0, the size of the coarsest voxels before rounding (input units)
+  void set_initial_voxel_size(double s0)
+  {
+    initial_voxel_size_ = s0;
+    check_parameters();
+    discard_from_voxelization();
+  }
+  /// sets r, the radius of the density test of the upsampling (input units)
+  void set_upsampling_radius(double r)
+  {
+    upsampling_radius_ = r;
+    check_parameters();
+    upsampled_ = false;
+    added_points_.clear();
+    discard_from_voxelization();
+  }
+  /// sets the largest extent of a removable outlier cluster, in voxels
+  void set_outlier_component_size(int voxels)
+  {
+    if(voxels < 0)
+      throw DF_L1::Invalid_input("skeletonization: outlier_component_size must not be negative");
+    outlier_component_size_ = voxels;
+    outlier_component_size_set_ = true;
+    grid_.reset();
+    field_.reset();
+    initial_.reset();
+  }
+  /// @}
+
+private:
+  void discard_from_voxelization()
+  {
+    raw_grid_.reset();
+    grid_.reset();
+    field_.reset();
+    initial_.reset();
+  }
+
+  void check_parameters() const
+  {
+    const auto fail = [](const std::string& what) { throw DF_L1::Invalid_input("skeletonization: " + what); };
+    if(!(initial_voxel_size_ > 0) || !std::isfinite(initial_voxel_size_))
+      fail("initial_voxel_size must be positive and finite");
+    if(exterior_propagation_steps_ < 1 || exterior_propagation_steps_ > 27)
+      fail("exterior_propagation_steps must be in [1, 27]");
+    if(upsampling_neighbors_ < 1 || upsampling_neighbors_ > 64)
+      fail("upsampling_neighbors must be in [1, 64]");
+    if(!(upsampling_radius_ > 0) || !std::isfinite(upsampling_radius_))
+      fail("upsampling_radius must be positive and finite");
+    if(!(thinning_coefficient_ > 0 && thinning_coefficient_ <= 10))
+      fail("thinning_coefficient must be in (0, 10]");
+    if(!(spur_length_ratio_ >= 0) || !std::isfinite(spur_length_ratio_))
+      fail("spur_length_ratio must be a non-negative number");
+  }
+
+  std::vector<Point> kept_points() const
+  {
+    std::vector<Point> kept;
+    kept.reserve(points_.size());
+    for(std::size_t i = 0; i < points_.size(); ++i)
+      if(!sparse_outliers_[i])
+        kept.push_back(points_[i]);
+    return kept;
+  }
+
+  std::vector<Point> points_;
+  double diagonal_ = 0;
+  int voxel_resolution_ = 100;
+  double initial_voxel_size_ = 0;
+  int exterior_propagation_steps_ = 1;
+  bool upsampling_ = true;
+  int upsampling_neighbors_ = 5;
+  double upsampling_radius_ = 0;
+  int outlier_component_size_ = 0;
+  bool outlier_component_size_set_ = false; // otherwise derived from the grid
+  double thinning_coefficient_ = 0.86;
+  double spur_length_ratio_ = 1;
+
+  std::vector<bool> sparse_outliers_, outliers_;
+  std::size_t sparse_outlier_count_ = 0, outlier_count_ = 0;
+  bool upsampled_ = false;
+  std::vector<Point> added_points_;
+  std::unique_ptr<Voxel_grid> raw_grid_, grid_;
+  DF_L1::Outlier_voxel_statistics outlier_voxel_statistics_;
+  std::unique_ptr<Distance_field> field_;
+  std::unique_ptr<Initial_skeleton> initial_;
+};
+
+} // namespace CGAL
+
+#endif // CGAL_DF_L1_SKELETON_H
