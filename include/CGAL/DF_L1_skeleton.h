@@ -198,8 +198,7 @@ public:
   /// \name Results
   /// Each runs the stages it needs.
   /// @{
-  /// the input points, in input order
-  const std::vector<Point>& input_points() const { return points_; }
+  const std::vector<Point>& input_points() const { return points_; } ///< the input points, in input order
   /// one flag per input point: scattered outliers and points of outlier voxels
   const std::vector<bool>& outlier_flags() { remove_outlier_voxels(); return outliers_; }
   /// number of input points flagged as outliers
@@ -224,20 +223,21 @@ public:
   double bbox_diagonal() const { return diagonal_; }                      ///< d_bb
   int voxel_resolution() const { return voxel_resolution_; }              ///< V
   double initial_voxel_size() const { return initial_voxel_size_; }       ///< s0 before rounding
-  int exterior_propagation_steps() const { return exterior_propagation_steps_; }
-  bool upsampling() const { return upsampling_; }
-  int upsampling_neighbors() const { return upsampling_neighbors_; }
-  double upsampling_radius() const { return upsampling_radius_; }
+  int exterior_propagation_steps() const { return exterior_propagation_steps_; } ///< exterior steps per level
+  bool upsampling() const { return upsampling_; } ///< whether sparse regions are upsampled
+  int upsampling_neighbors() const { return upsampling_neighbors_; } ///< k of the density test
+  double upsampling_radius() const { return upsampling_radius_; } ///< r of the density test
   /// the largest extent of a removable outlier cluster, in voxels (derived from the grid
   /// once the voxels exist)
   int outlier_component_size() { remove_outlier_voxels(); return outlier_component_size_; }
-  double thinning_coefficient() const { return thinning_coefficient_; }
-  double spur_length_ratio() const { return spur_length_ratio_; }
+  double thinning_coefficient() const { return thinning_coefficient_; } ///< c of Eq. 2
+  double spur_length_ratio() const { return spur_length_ratio_; } ///< spur pruning of the initial graph
   /// @}
 
   /// \name Setting derived parameters
   /// Each discards the results of the stages that depend on the parameter.
   /// @{
+
   /// sets s0, the size of the coarsest voxels before rounding (input units)
   void set_initial_voxel_size(double s0)
   {

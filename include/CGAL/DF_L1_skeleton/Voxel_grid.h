@@ -33,8 +33,8 @@ enum class Voxel_label : std::uint8_t
 template <class Traits>
 struct Grid_geometry
 {
-  typedef typename Traits::FT FT;
-  typedef typename Traits::Point_3 Point_3;
+  typedef typename Traits::FT FT;           ///< number type
+  typedef typename Traits::Point_3 Point_3; ///< point type
 
   Point_3 origin = Point_3(0, 0, 0); ///< lower corner of voxel (0,0,0)
   FT voxel_size = 1;                 ///< edge length of a voxel, in input units
@@ -86,7 +86,9 @@ struct Voxelization_level
 {
   double voxel_size = 0;                 ///< voxel edge length at this level
   std::array<int, 3> dims = {{0, 0, 0}}; ///< grid size at this level (after cropping)
-  std::size_t boundary = 0, interior = 0, exterior = 0; ///< label counts
+  std::size_t boundary = 0; ///< number of boundary voxels
+  std::size_t interior = 0; ///< number of interior voxels
+  std::size_t exterior = 0; ///< number of exterior voxels
 };
 
 /// \ingroup PkgDFL1SkeletonRef

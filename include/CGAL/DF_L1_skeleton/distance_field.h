@@ -25,8 +25,8 @@ template <class Traits>
 class Distance_field : public Grid_geometry<Traits>
 {
 public:
-  typedef typename Traits::FT FT;
-  typedef typename Traits::Point_3 Point_3;
+  typedef typename Traits::FT FT;           ///< number type
+  typedef typename Traits::Point_3 Point_3; ///< point type
 
   /// distance of each voxel, in voxel units
   std::vector<float> values;

@@ -19,6 +19,7 @@ namespace DF_L1 {
 class Invalid_input : public std::invalid_argument
 {
 public:
+  /// \param what the message, naming the input and what is wrong
   explicit Invalid_input(const std::string& what) : std::invalid_argument(what) {}
 };
 
@@ -28,6 +29,7 @@ public:
 class Read_error : public std::runtime_error
 {
 public:
+  /// \param what the message, naming the input and what is wrong
   explicit Read_error(const std::string& what) : std::runtime_error(what) {}
 };
 
@@ -37,6 +39,7 @@ public:
 class Write_error : public std::runtime_error
 {
 public:
+  /// \param what the message, naming the input and what is wrong
   explicit Write_error(const std::string& what) : std::runtime_error(what) {}
 };
 
