@@ -2,22 +2,15 @@
 // with known skeletons, and the voxel topology it relies on.
 #include "support/synthetic_shapes.h"
 
-#include <CGAL/DF_L1_skeleton/distance_field.h>
-#include <CGAL/DF_L1_skeleton/extract_initial_skeleton.h>
-#include <CGAL/DF_L1_skeleton/flag_sparse_outliers.h>
+#include <CGAL/DF_L1_skeleton.h>
 #include <CGAL/DF_L1_skeleton/internal/voxel_curve_graph.h>
 #include <CGAL/DF_L1_skeleton/internal/voxel_topology.h>
-#include <CGAL/DF_L1_skeleton/remove_outlier_voxels.h>
-#include <CGAL/DF_L1_skeleton/skeleton_statistics.h>
-#include <CGAL/DF_L1_skeleton/upsample_sparse_regions.h>
-#include <CGAL/DF_L1_skeleton/voxelize_point_set.h>
 
 #include <tbb/global_control.h>
 
 #include <catch2/catch.hpp>
 
 #include <cmath>
-#include <iterator>
 #include <string>
 #include <vector>
 
@@ -35,20 +28,13 @@ struct Volumetric_result
   double voxel_size = 0;
 };
 
-// The volumetric stages in the order the tool runs them.
+// The volumetric stages as the tool runs them.
 Volumetric_result run_volumetric_stages(const std::vector<Point_3>& points)
 {
-  const std::vector<bool> sparse = DF::flag_sparse_outliers(points);
-  std::vector<Point_3> kept;
-  for(std::size_t i = 0; i < points.size(); ++i)
-    if(!sparse[i])
-      kept.push_back(points[i]);
-  std::vector<Point_3> added;
-  DF::upsample_sparse_regions(kept, std::back_inserter(added));
-  kept.insert(kept.end(), added.begin(), added.end());
+  CGAL::DF_L1_skeletonization<Kernel> skeletonization(points);
   Volumetric_result r;
-  r.field = DF::compute_distance_field(DF::remove_outlier_voxels(DF::voxelize_point_set(kept)));
-  r.initial = DF::extract_initial_skeleton(r.field);
+  r.field = skeletonization.distance_field();
+  r.initial = skeletonization.initial_skeleton();
   r.voxel_size = CGAL::to_double(r.field.voxel_size);
   return r;
 }
