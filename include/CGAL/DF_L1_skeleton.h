@@ -21,6 +21,8 @@
 #include <CGAL/DF_L1_skeleton/voxelize_point_set.h>
 
 #include <CGAL/Named_function_parameters.h>
+
+#include <Eigen/Dense>
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/tags.h>
 
@@ -71,7 +73,8 @@ public:
   ///        `remove_outlier_voxels()` and `extract_initial_skeleton()` for their meaning
   ///        and defaults)
   /// \throws DF_L1::Invalid_input if the range is empty, holds a non-finite coordinate,
-  ///         all its points coincide, or a parameter is out of range
+  ///         all its points coincide or lie on a plane (within a quarter of a voxel, RMS),
+  ///         or a parameter is out of range
   template <class PointRange, class NamedParameters = parameters::Default_named_parameters>
   explicit DF_L1_skeletonization(const PointRange& points, const NamedParameters& np = parameters::default_values())
   {
@@ -88,6 +91,7 @@ public:
     diagonal_ = DF_L1::internal::diagonal(box);
 
     voxel_resolution_ = DF_L1::internal::voxel_resolution(np, "skeletonization");
+    check_volume(DF_L1::internal::longest_side(box) / voxel_resolution_);
     initial_voxel_size_ = choose_parameter(get_parameter(np, internal_np::df_l1_initial_voxel_size), diagonal_ / 9);
     exterior_propagation_steps_ = choose_parameter(get_parameter(np, internal_np::df_l1_exterior_propagation), 1);
     upsampling_ = choose_parameter(get_parameter(np, internal_np::df_l1_upsampling), true);
@@ -274,6 +278,27 @@ private:
     grid_.reset();
     field_.reset();
     initial_.reset();
+  }
+
+  // Points on a plane (or a line) enclose no volume, yet the voxels between their samples
+  // can look enclosed and give a meaningless skeleton: refuse them with a clear message.
+  void check_volume(double voxel_size) const
+  {
+    Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+    for(const Point& p : points_)
+      mean += Eigen::Vector3d(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
+    mean /= double(points_.size());
+    Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
+    for(const Point& p : points_)
+    {
+      const Eigen::Vector3d d = Eigen::Vector3d(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())) - mean;
+      covariance += d * d.transpose();
+    }
+    covariance /= double(points_.size());
+    const double thickness = std::sqrt((std::max)(0.0, Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(covariance).eigenvalues()(0)));
+    if(thickness < 0.25 * voxel_size)
+      throw DF_L1::Invalid_input("no skeleton: the " + std::to_string(points_.size()) +
+                                 " points lie on a plane (RMS distance to it under a quarter of a voxel); they enclose no volume");
   }
 
   void check_parameters() const

@@ -97,6 +97,11 @@ TEST_CASE("skeletonization class: bad input and parameters throw Invalid_input",
   CHECK_THROWS_AS(Skeletonization(points, CGAL::parameters::spur_length_ratio(-1.0)), DF::Invalid_input);
   CHECK_THROWS_AS(Skeletonization(points, CGAL::parameters::outlier_component_size(-2)), DF::Invalid_input);
   CHECK_THROWS_AS(Skeletonization(points, CGAL::parameters::upsampling_neighbors(0)), DF::Invalid_input);
+  std::vector<Point_3> tilted_plane; // coplanar, but not along an axis
+  for(int i = 0; i < 30; ++i)
+    for(int j = 0; j < 30; ++j)
+      tilted_plane.emplace_back(i * 0.1, j * 0.1, 1 - 0.5 * i * 0.1 + 0.25 * j * 0.1);
+  CHECK_THROWS_WITH(Skeletonization(tilted_plane), Catch::Contains("plane"));
   Skeletonization s(points);
   CHECK_THROWS_AS(s.set_upsampling_radius(0), DF::Invalid_input);
   CHECK_THROWS_AS(s.set_outlier_component_size(-1), DF::Invalid_input);
