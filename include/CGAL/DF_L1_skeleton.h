@@ -84,27 +84,27 @@ public:
     const auto point_map = NP_helper::get_const_point_map(points, np);
     for(const auto& p : points)
       points_.push_back(get(point_map, p));
-    const CGAL::Bbox_3 box = DF_L1::internal::checked_bbox(points_, CGAL::Identity_property_map<Point>(), "skeletonization");
+    const CGAL::Bbox_3 box = DF_L1::internal::checked_bbox(points_, CGAL::Identity_property_map<Point>(), stage_name);
     if(!(DF_L1::internal::longest_side(box) > 0))
-      throw DF_L1::Invalid_input("skeletonization: all " + std::to_string(points_.size()) +
+      throw DF_L1::Invalid_input(std::string(stage_name) + ": all " + std::to_string(points_.size()) +
                                  " points coincide; there is no shape to skeletonize");
     diagonal_ = DF_L1::internal::diagonal(box);
 
-    voxel_resolution_ = DF_L1::internal::voxel_resolution(np, "skeletonization");
+    voxel_resolution_ = DF_L1::internal::voxel_resolution(np, stage_name);
     check_volume(DF_L1::internal::longest_side(box) / voxel_resolution_);
-    initial_voxel_size_ = choose_parameter(get_parameter(np, internal_np::df_l1_initial_voxel_size), diagonal_ / 9);
-    exterior_propagation_steps_ = choose_parameter(get_parameter(np, internal_np::df_l1_exterior_propagation), 1);
+    initial_voxel_size_ = DF_L1::internal::initial_voxel_size(np, diagonal_, stage_name);
+    exterior_propagation_steps_ = DF_L1::internal::exterior_propagation_steps(np, stage_name);
     upsampling_ = choose_parameter(get_parameter(np, internal_np::df_l1_upsampling), true);
-    upsampling_neighbors_ = choose_parameter(get_parameter(np, internal_np::df_l1_upsampling_neighbors), 5);
-    upsampling_radius_ = choose_parameter(get_parameter(np, internal_np::df_l1_upsampling_radius),
-                                          3 * diagonal_ / std::cbrt(double(points_.size())));
-    outlier_component_size_ = choose_parameter(get_parameter(np, internal_np::df_l1_outlier_component_size), -1);
-    outlier_component_size_set_ = outlier_component_size_ >= 0;
-    if(!outlier_component_size_set_ && !parameters::is_default_parameter<NamedParameters, internal_np::df_l1_outlier_component_size_t>::value)
-      throw DF_L1::Invalid_input("skeletonization: outlier_component_size must not be negative");
-    thinning_coefficient_ = choose_parameter(get_parameter(np, internal_np::df_l1_thinning_coefficient), 0.86);
-    spur_length_ratio_ = choose_parameter(get_parameter(np, internal_np::df_l1_spur_length), 1.0);
-    check_parameters();
+    upsampling_neighbors_ = DF_L1::internal::upsampling_neighbors(np, stage_name);
+    upsampling_radius_ = DF_L1::internal::upsampling_radius(np, diagonal_, points_.size(), stage_name);
+    // The default of the outlier size derives from the grid, known after voxelization.
+    outlier_component_size_set_ =
+      !parameters::is_default_parameter<NamedParameters, internal_np::df_l1_outlier_component_size_t>::value;
+    if(outlier_component_size_set_)
+      outlier_component_size_ = DF_L1::internal::check_outlier_component_size(
+        choose_parameter(get_parameter(np, internal_np::df_l1_outlier_component_size), 0), stage_name);
+    thinning_coefficient_ = DF_L1::internal::thinning_coefficient(np, stage_name);
+    spur_length_ratio_ = DF_L1::internal::spur_length_ratio(np, stage_name);
   }
 
   /// \name Stages
@@ -162,9 +162,9 @@ public:
     if(grid_)
       return;
     voxelize();
-    const int longest = (std::max)({raw_grid_->dims[0], raw_grid_->dims[1], raw_grid_->dims[2]});
     if(!outlier_component_size_set_)
-      outlier_component_size_ = (std::max)(3, longest / 10);
+      outlier_component_size_ =
+        DF_L1::internal::outlier_component_size(parameters::default_values(), raw_grid_->dims, stage_name);
     grid_ = std::make_unique<Voxel_grid>(DF_L1::remove_outlier_voxels(
       *raw_grid_, parameters::outlier_component_size(outlier_component_size_), &outlier_voxel_statistics_));
     outliers_ = DF_L1::flag_outlier_points(points_, *grid_);
@@ -245,15 +245,13 @@ public:
   /// sets s0, the size of the coarsest voxels before rounding (input units)
   void set_initial_voxel_size(double s0)
   {
-    initial_voxel_size_ = s0;
-    check_parameters();
+    initial_voxel_size_ = DF_L1::internal::check_initial_voxel_size(s0, stage_name);
     discard_from_voxelization();
   }
   /// sets r, the radius of the density test of the upsampling (input units)
   void set_upsampling_radius(double r)
   {
-    upsampling_radius_ = r;
-    check_parameters();
+    upsampling_radius_ = DF_L1::internal::check_upsampling_radius(r, stage_name);
     upsampled_ = false;
     added_points_.clear();
     discard_from_voxelization();
@@ -261,9 +259,7 @@ public:
   /// sets the largest extent of a removable outlier cluster, in voxels
   void set_outlier_component_size(int voxels)
   {
-    if(voxels < 0)
-      throw DF_L1::Invalid_input("skeletonization: outlier_component_size must not be negative");
-    outlier_component_size_ = voxels;
+    outlier_component_size_ = DF_L1::internal::check_outlier_component_size(voxels, stage_name);
     outlier_component_size_set_ = true;
     grid_.reset();
     field_.reset();
@@ -272,6 +268,8 @@ public:
   /// @}
 
 private:
+  static constexpr const char* stage_name = "skeletonization"; // in error messages
+
   void discard_from_voxelization()
   {
     raw_grid_.reset();
@@ -299,23 +297,6 @@ private:
     if(thickness < 0.25 * voxel_size)
       throw DF_L1::Invalid_input("no skeleton: the " + std::to_string(points_.size()) +
                                  " points lie on a plane (RMS distance to it under a quarter of a voxel); they enclose no volume");
-  }
-
-  void check_parameters() const
-  {
-    const auto fail = [](const std::string& what) { throw DF_L1::Invalid_input("skeletonization: " + what); };
-    if(!(initial_voxel_size_ > 0) || !std::isfinite(initial_voxel_size_))
-      fail("initial_voxel_size must be positive and finite");
-    if(exterior_propagation_steps_ < 1 || exterior_propagation_steps_ > 27)
-      fail("exterior_propagation_steps must be in [1, 27]");
-    if(upsampling_neighbors_ < 1 || upsampling_neighbors_ > 64)
-      fail("upsampling_neighbors must be in [1, 64]");
-    if(!(upsampling_radius_ > 0) || !std::isfinite(upsampling_radius_))
-      fail("upsampling_radius must be positive and finite");
-    if(!(thinning_coefficient_ > 0 && thinning_coefficient_ <= 10))
-      fail("thinning_coefficient must be in (0, 10]");
-    if(!(spur_length_ratio_ >= 0) || !std::isfinite(spur_length_ratio_))
-      fail("spur_length_ratio must be a non-negative number");
   }
 
   std::vector<Point> kept_points() const

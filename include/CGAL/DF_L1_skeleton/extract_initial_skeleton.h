@@ -245,14 +245,8 @@ template <class Traits, class NamedParameters = parameters::Default_named_parame
 Initial_skeleton<Traits> extract_initial_skeleton(const Distance_field<Traits>& field,
                                                   const NamedParameters& np = parameters::default_values())
 {
-  using parameters::choose_parameter;
-  using parameters::get_parameter;
-  const double c = choose_parameter(get_parameter(np, internal_np::df_l1_thinning_coefficient), 0.86);
-  if(!(c > 0 && c <= 10))
-    throw Invalid_input("initial skeleton: thinning_coefficient must be in (0, 10]");
-  const double spur_ratio = choose_parameter(get_parameter(np, internal_np::df_l1_spur_length), 1.0);
-  if(!(spur_ratio >= 0) || !std::isfinite(spur_ratio))
-    throw Invalid_input("initial skeleton: spur_length_ratio must be a non-negative number");
+  const double c = internal::thinning_coefficient(np, "initial skeleton");
+  const double spur_ratio = internal::spur_length_ratio(np, "initial skeleton");
 
   const double end_depth_ratio = 0.75;
   Initial_skeleton<Traits> result;

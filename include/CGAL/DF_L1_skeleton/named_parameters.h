@@ -21,6 +21,9 @@
 
 #include <CGAL/Named_function_parameters.h>
 
+#include <algorithm>
+#include <array>
+#include <cmath>
 #include <string>
 
 namespace CGAL {
@@ -91,7 +94,10 @@ CGAL_DF_L1_ADD_NAMED_PARAMETER(df_l1_spur_length, spur_length_ratio)
 namespace DF_L1 {
 namespace internal {
 
-// V is read by several stages (upsampling spacing, voxelization): one default, one range.
+// Each parameter has one default and one range, read here by the stage that uses it and
+// by DF_L1_skeletonization; `stage` names the caller in the error message.
+
+// V is read by several stages (upsampling spacing, voxelization).
 template <class NamedParameters>
 int voxel_resolution(const NamedParameters& np, const char* stage)
 {
@@ -99,6 +105,92 @@ int voxel_resolution(const NamedParameters& np, const char* stage)
   if(V < 3 || V > 2048)
     throw Invalid_input(std::string(stage) + ": voxel_resolution must be in [3, 2048], got " + std::to_string(V));
   return V;
+}
+
+inline double check_initial_voxel_size(double s0, const char* stage)
+{
+  if(!(s0 > 0) || !std::isfinite(s0))
+    throw Invalid_input(std::string(stage) + ": initial_voxel_size must be positive and finite");
+  return s0;
+}
+
+// s0, default d_bb / 9 (the paper).
+template <class NamedParameters>
+double initial_voxel_size(const NamedParameters& np, double diagonal, const char* stage)
+{
+  return check_initial_voxel_size(
+    parameters::choose_parameter(parameters::get_parameter(np, internal_np::df_l1_initial_voxel_size), diagonal / 9), stage);
+}
+
+template <class NamedParameters>
+int exterior_propagation_steps(const NamedParameters& np, const char* stage)
+{
+  const int steps = parameters::choose_parameter(parameters::get_parameter(np, internal_np::df_l1_exterior_propagation), 1);
+  if(steps < 1 || steps > 27)
+    throw Invalid_input(std::string(stage) + ": exterior_propagation_steps must be in [1, 27]");
+  return steps;
+}
+
+template <class NamedParameters>
+int upsampling_neighbors(const NamedParameters& np, const char* stage)
+{
+  const int k = parameters::choose_parameter(parameters::get_parameter(np, internal_np::df_l1_upsampling_neighbors), 5);
+  if(k < 1 || k > 64)
+    throw Invalid_input(std::string(stage) + ": upsampling_neighbors must be in [1, 64], got " + std::to_string(k));
+  return k;
+}
+
+inline double check_upsampling_radius(double r, const char* stage)
+{
+  if(!(r > 0) || !std::isfinite(r))
+    throw Invalid_input(std::string(stage) + ": upsampling_radius must be positive and finite");
+  return r;
+}
+
+// r of the density test, default 3 d_bb / cbrt(N) for N points.
+template <class NamedParameters>
+double upsampling_radius(const NamedParameters& np, double diagonal, std::size_t n, const char* stage)
+{
+  return check_upsampling_radius(
+    parameters::choose_parameter(parameters::get_parameter(np, internal_np::df_l1_upsampling_radius),
+                                 3 * diagonal / std::cbrt(double(n))),
+    stage);
+}
+
+inline int check_outlier_component_size(int voxels, const char* stage)
+{
+  if(voxels < 0)
+    throw Invalid_input(std::string(stage) + ": outlier_component_size must not be negative");
+  return voxels;
+}
+
+// Default max(3, V/10), V the longest side of the grid in voxels.
+template <class NamedParameters>
+int outlier_component_size(const NamedParameters& np, const std::array<int, 3>& dims, const char* stage)
+{
+  const int longest = (std::max)({dims[0], dims[1], dims[2]});
+  return check_outlier_component_size(
+    parameters::choose_parameter(parameters::get_parameter(np, internal_np::df_l1_outlier_component_size),
+                                 (std::max)(3, longest / 10)),
+    stage);
+}
+
+template <class NamedParameters>
+double thinning_coefficient(const NamedParameters& np, const char* stage)
+{
+  const double c = parameters::choose_parameter(parameters::get_parameter(np, internal_np::df_l1_thinning_coefficient), 0.86);
+  if(!(c > 0 && c <= 10))
+    throw Invalid_input(std::string(stage) + ": thinning_coefficient must be in (0, 10]");
+  return c;
+}
+
+template <class NamedParameters>
+double spur_length_ratio(const NamedParameters& np, const char* stage)
+{
+  const double ratio = parameters::choose_parameter(parameters::get_parameter(np, internal_np::df_l1_spur_length), 1.0);
+  if(!(ratio >= 0) || !std::isfinite(ratio))
+    throw Invalid_input(std::string(stage) + ": spur_length_ratio must be a non-negative number");
+  return ratio;
 }
 
 } // namespace internal

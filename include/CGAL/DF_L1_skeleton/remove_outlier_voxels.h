@@ -58,13 +58,7 @@ Voxel_grid<Traits> remove_outlier_voxels(const Voxel_grid<Traits>& grid,
                                          const NamedParameters& np = parameters::default_values(),
                                          Outlier_voxel_statistics* statistics = nullptr)
 {
-  using parameters::choose_parameter;
-  using parameters::get_parameter;
-  const int longest = (std::max)({grid.dims[0], grid.dims[1], grid.dims[2]});
-  const int max_extent =
-    choose_parameter(get_parameter(np, internal_np::df_l1_outlier_component_size), (std::max)(3, longest / 10));
-  if(max_extent < 0)
-    throw Invalid_input("outlier removal: outlier_component_size must not be negative");
+  const int max_extent = internal::outlier_component_size(np, grid.dims, "outlier removal");
 
   Voxel_grid<Traits> result = grid;
   Outlier_voxel_statistics stats;

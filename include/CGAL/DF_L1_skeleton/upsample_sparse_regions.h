@@ -75,8 +75,6 @@ OutputIterator upsample_sparse_regions(const PointRange& points, OutputIterator 
   typedef Point_set_processing_3_np_helper<const PointRange, NamedParameters> NP_helper;
   typedef typename NP_helper::Geom_traits Traits;
   typedef typename Traits::Point_3 Point_3;
-  using parameters::choose_parameter;
-  using parameters::get_parameter;
 
   const auto point_map = NP_helper::get_const_point_map(points, np);
   const CGAL::Bbox_3 box = internal::checked_bbox(points, point_map, "upsampling");
@@ -86,13 +84,8 @@ OutputIterator upsample_sparse_regions(const PointRange& points, OutputIterator 
   if(n < 2 || !(diagonal > 0))
     return output; // nothing to interpolate between
 
-  const int k = choose_parameter(get_parameter(np, internal_np::df_l1_upsampling_neighbors), 5);
-  if(k < 1 || k > 64)
-    throw Invalid_input("upsampling: upsampling_neighbors must be in [1, 64], got " + std::to_string(k));
-  const double r = choose_parameter(get_parameter(np, internal_np::df_l1_upsampling_radius),
-                                    3 * diagonal / std::cbrt(double(n)));
-  if(!(r > 0) || !std::isfinite(r))
-    throw Invalid_input("upsampling: upsampling_radius must be positive and finite");
+  const int k = internal::upsampling_neighbors(np, "upsampling");
+  const double r = internal::upsampling_radius(np, diagonal, n, "upsampling");
   const int V = internal::voxel_resolution(np, "upsampling");
   const double spacing = internal::longest_side(box) / V;
 

@@ -448,8 +448,6 @@ voxelize_point_set(const PointRange& points, const NamedParameters& np = paramet
   typedef Point_set_processing_3_np_helper<const PointRange, NamedParameters> NP_helper;
   typedef typename NP_helper::Geom_traits Traits;
   typedef typename Traits::Point_3 Point_3;
-  using parameters::choose_parameter;
-  using parameters::get_parameter;
 
   const auto point_map = NP_helper::get_const_point_map(points, np);
   const CGAL::Bbox_3 box = internal::checked_bbox(points, point_map, "voxelization");
@@ -457,13 +455,8 @@ voxelize_point_set(const PointRange& points, const NamedParameters& np = paramet
   if(!(longest > 0))
     throw Invalid_input("voxelization: all points coincide, there is no shape to voxelize");
   const int V = internal::voxel_resolution(np, "voxelization");
-  const double s0 = choose_parameter(get_parameter(np, internal_np::df_l1_initial_voxel_size),
-                                     internal::diagonal(box) / 9);
-  if(!(s0 > 0) || !std::isfinite(s0))
-    throw Invalid_input("voxelization: initial_voxel_size must be positive and finite");
-  const int steps = choose_parameter(get_parameter(np, internal_np::df_l1_exterior_propagation), 1);
-  if(steps < 1 || steps > 27)
-    throw Invalid_input("voxelization: exterior_propagation_steps must be in [1, 27]");
+  const double s0 = internal::initial_voxel_size(np, internal::diagonal(box), "voxelization");
+  const int steps = internal::exterior_propagation_steps(np, "voxelization");
 
   const double finest = longest / V;
   // Rounded down: a coarsest level coarser than s0 would enclose more empty space.
