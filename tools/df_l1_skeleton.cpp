@@ -11,15 +11,8 @@
 #include <CGAL/DF_L1_skeleton/IO/read_point_cloud.h>
 #include <CGAL/DF_L1_skeleton/IO/write_skeleton.h>
 #include <CGAL/DF_L1_skeleton/IO/write_svg_preview.h>
-#include <CGAL/DF_L1_skeleton/assign_points_to_skeleton.h>
-#include <CGAL/DF_L1_skeleton/distance_field.h>
-#include <CGAL/DF_L1_skeleton/extract_initial_skeleton.h>
-#include <CGAL/DF_L1_skeleton/flag_sparse_outliers.h>
 #include <CGAL/DF_L1_skeleton/internal/atomic_file.h>
-#include <CGAL/DF_L1_skeleton/remove_outlier_voxels.h>
 #include <CGAL/DF_L1_skeleton/skeleton_statistics.h>
-#include <CGAL/DF_L1_skeleton/upsample_sparse_regions.h>
-#include <CGAL/DF_L1_skeleton/voxelize_point_set.h>
 
 #include <tbb/global_control.h>
 
@@ -258,7 +251,8 @@ int run(const Settings& s)
   const std::vector<Point_3>& points = cloud.points;
 
   // The library resolves the derived defaults; the report states what it used.
-  CGAL::DF_L1_skeletonization<Kernel> skeletonization(
+  typedef CGAL::DF_L1_skeletonization<Kernel> Skeletonization;
+  Skeletonization skeletonization(
     points, params::voxel_resolution(s.voxel_resolution,
             params::exterior_propagation_steps(s.exterior_propagation_steps,
             params::upsampling(s.upsampling,
@@ -271,13 +265,12 @@ int run(const Settings& s)
     skeletonization.set_upsampling_radius(s.upsampling_radius);
   if(s.outlier_component_size >= 0)
     skeletonization.set_outlier_component_size(s.outlier_component_size);
-  const auto stage = [&](const char* name, void (CGAL::DF_L1_skeletonization<Kernel>::*f)()) {
+  const auto stage = [&](const char* name, void (Skeletonization::*f)()) {
     clock.run(name, [&] {
       (skeletonization.*f)();
       return 0;
     });
   };
-  typedef CGAL::DF_L1_skeletonization<Kernel> Skeletonization;
   // Scattered outliers go before voxelization; the voxel test catches the clusters.
   stage("outlier_points", &Skeletonization::flag_outliers);
   if(s.upsampling)

@@ -58,6 +58,9 @@ template <class Geometry, class EndPredicate>
 void thin_to_curves(const Geometry& grid, const std::vector<float>& depth, std::vector<char>& in,
                     const EndPredicate& keeps_end)
 {
+  const auto deeper = [&](std::size_t a, std::size_t b) {
+    return depth[a] != depth[b] ? depth[a] < depth[b] : a < b;
+  };
   std::vector<std::size_t> order;
   for(std::size_t v = 0; v < in.size(); ++v)
   {
@@ -70,14 +73,9 @@ void thin_to_curves(const Geometry& grid, const std::vector<float>& depth, std::
     else
       order.push_back(v);
   }
-  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-    return depth[a] != depth[b] ? depth[a] < depth[b] : a < b;
-  });
+  std::sort(order.begin(), order.end(), deeper);
   const std::array<std::ptrdiff_t, 27> offsets = neighbourhood_offsets(grid);
   const int face_cells[6] = {14, 12, 16, 10, 22, 4};
-  const auto deeper = [&](std::size_t a, std::size_t b) {
-    return depth[a] != depth[b] ? depth[a] < depth[b] : a < b;
-  };
   // Only a voxel whose neighbourhood changed can become removable: the work list holds
   // the new voxels of the slice and the neighbours of the voxels just removed.
   std::vector<char> listed(in.size(), 0);
