@@ -1,6 +1,7 @@
 // Geometry of the volumetric stages on synthetic shapes with known skeletons:
 // voxel labels, distance field, outlier removal, upsampling, scale invariance.
 #include "support/synthetic_shapes.h"
+#include "support/voxel_checks.h"
 
 #include <CGAL/DF_L1_skeleton/distance_field.h>
 #include <CGAL/DF_L1_skeleton/extract_initial_skeleton.h>
@@ -29,44 +30,6 @@ DF::Voxel_grid<Kernel> voxels_of(const std::vector<Point_3>& points)
   return DF::remove_outlier_voxels(DF::voxelize_point_set(points));
 }
 
-// Exterior voxels reachable from the grid border through exterior voxels (26-connected).
-std::size_t exterior_reachable_from_border(const DF::Voxel_grid<Kernel>& g)
-{
-  std::vector<char> seen(g.size(), 0);
-  std::vector<std::size_t> stack;
-  for(std::size_t v = 0; v < g.size(); ++v)
-  {
-    const auto c = g.coordinates(v);
-    const bool border = c[0] == 0 || c[1] == 0 || c[2] == 0 || c[0] == g.dims[0] - 1 ||
-                        c[1] == g.dims[1] - 1 || c[2] == g.dims[2] - 1;
-    if(border && g.labels[v] == DF::Voxel_label::EXTERIOR)
-    {
-      seen[v] = 1;
-      stack.push_back(v);
-    }
-  }
-  std::size_t count = 0;
-  while(!stack.empty())
-  {
-    const auto c = g.coordinates(stack.back());
-    stack.pop_back();
-    ++count;
-    for(int cell = 0; cell < 27; ++cell)
-    {
-      const int i = c[0] + cell % 3 - 1, j = c[1] + (cell / 3) % 3 - 1, k = c[2] + cell / 9 - 1;
-      if(!g.contains(i, j, k))
-        continue;
-      const std::size_t w = g.index(i, j, k);
-      if(!seen[w] && g.labels[w] == DF::Voxel_label::EXTERIOR)
-      {
-        seen[w] = 1;
-        stack.push_back(w);
-      }
-    }
-  }
-  return count;
-}
-
 } // namespace
 
 TEST_CASE("voxels: one exterior region, interior voxels inside the true shape", "[voxels]")
@@ -92,7 +55,7 @@ TEST_CASE("voxels: one exterior region, interior voxels inside the true shape", 
     const double s = grid.voxel_size;
     // V voxels across the bbox, a margin of 4 on each side, 1 for the coarse alignment
     CHECK((std::max)({grid.dims[0], grid.dims[1], grid.dims[2]}) <= 100 + 2 * 4 + 2);
-    CHECK(exterior_reachable_from_border(grid) == grid.count(DF::Voxel_label::EXTERIOR));
+    CHECK(DF_L1_test::exterior_reachable_from_border(grid) == grid.count(DF::Voxel_label::EXTERIOR));
     std::size_t interior = 0, outside = 0;
     double worst = -1e9;
     for(std::size_t v = 0; v < grid.size(); ++v)

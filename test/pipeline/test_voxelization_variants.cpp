@@ -1,6 +1,7 @@
 // Voxelization of degraded samples: the interior must survive one-sided holes, sparse
 // and uneven sampling and noise, without filling the real holes of the shape.
 #include "support/synthetic_shapes.h"
+#include "support/voxel_checks.h"
 
 #include <CGAL/DF_L1_skeleton/distance_field.h>
 #include <CGAL/DF_L1_skeleton/upsample_sparse_regions.h>
@@ -25,45 +26,6 @@ std::vector<Point_3> with_upsampling(const std::vector<Point_3>& points)
   std::vector<Point_3> all = points;
   DF::upsample_sparse_regions(points, std::back_inserter(all));
   return all;
-}
-
-// Whether every exterior voxel is reachable from the grid border through exterior voxels.
-bool exterior_is_one_region(const DF::Voxel_grid<Kernel>& g)
-{
-  std::vector<char> seen(g.size(), 0);
-  std::vector<std::size_t> stack;
-  std::size_t exterior = 0, reached = 0;
-  for(std::size_t v = 0; v < g.size(); ++v)
-  {
-    if(g.labels[v] != DF::Voxel_label::EXTERIOR)
-      continue;
-    ++exterior;
-    const auto c = g.coordinates(v);
-    if(c[0] == 0 || c[1] == 0 || c[2] == 0 || c[0] == g.dims[0] - 1 || c[1] == g.dims[1] - 1 || c[2] == g.dims[2] - 1)
-    {
-      seen[v] = 1;
-      stack.push_back(v);
-    }
-  }
-  while(!stack.empty())
-  {
-    const auto c = g.coordinates(stack.back());
-    stack.pop_back();
-    ++reached;
-    for(int cell = 0; cell < 27; ++cell)
-    {
-      const int i = c[0] + cell % 3 - 1, j = c[1] + (cell / 3) % 3 - 1, k = c[2] + cell / 9 - 1;
-      if(!g.contains(i, j, k))
-        continue;
-      const std::size_t w = g.index(i, j, k);
-      if(!seen[w] && g.labels[w] == DF::Voxel_label::EXTERIOR)
-      {
-        seen[w] = 1;
-        stack.push_back(w);
-      }
-    }
-  }
-  return reached == exterior;
 }
 
 double max_inscribed_radius(const DF_L1_test::Shape& shape)
@@ -123,7 +85,7 @@ TEST_CASE("voxels: the interior survives holes, sparse and uneven sampling, and 
       else
         CHECK(double(outside) <= 0.05 * double(interior));
 
-      CHECK(exterior_is_one_region(grid));
+      CHECK(DF_L1_test::exterior_is_one_region(grid));
       // The real holes of the shape stay exterior.
       auto label_at = [&](const Point_3& p) {
         const auto c = grid.locate(p);
