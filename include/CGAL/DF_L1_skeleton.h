@@ -9,6 +9,8 @@
 
 #include <CGAL/DF_L1_skeleton/Skeleton_graph.h>
 #include <CGAL/DF_L1_skeleton/assign_points_to_skeleton.h>
+#include <CGAL/DF_L1_skeleton/build_skeleton_graph.h>
+#include <CGAL/DF_L1_skeleton/contract_samples.h>
 #include <CGAL/DF_L1_skeleton/distance_field.h>
 #include <CGAL/DF_L1_skeleton/errors.h>
 #include <CGAL/DF_L1_skeleton/extract_initial_skeleton.h>
@@ -59,6 +61,7 @@ public:
   typedef DF_L1::Voxel_grid<Traits> Voxel_grid;             ///< labelled voxels
   typedef DF_L1::Distance_field<Traits> Distance_field;     ///< distance of every voxel
   typedef DF_L1::Initial_skeleton<Traits> Initial_skeleton; ///< skeleton voxels and their graph
+  typedef DF_L1::Contracted_samples<Traits> Contracted_samples; ///< samples, branches and iterations of the contraction
   /// @}
 
   /// Copies the points and reads the parameters.
@@ -69,9 +72,12 @@ public:
   ///        parameters of the stages: `voxel_resolution`, `initial_voxel_size`,
   ///        `exterior_propagation_steps`, `upsampling`, `upsampling_neighbors`,
   ///        `upsampling_radius`, `outlier_component_size`, `thinning_coefficient`,
-  ///        `spur_length_ratio` (see `voxelize_point_set()`, `upsample_sparse_regions()`,
-  ///        `remove_outlier_voxels()` and `extract_initial_skeleton()` for their meaning
-  ///        and defaults)
+  ///        `spur_length_ratio`, `skeletonization_method`, `number_of_samples`,
+  ///        `repulsion_coefficient`, `initial_support_radius`, `support_radius_growth`,
+  ///        `branch_directionality`, `number_of_iterations` (see `voxelize_point_set()`,
+  ///        `upsample_sparse_regions()`, `remove_outlier_voxels()`,
+  ///        `extract_initial_skeleton()` and `contract_samples()` for their meaning and
+  ///        defaults)
   /// \throws DF_L1::Invalid_input if the range is empty, holds a non-finite coordinate,
   ///         all its points coincide or lie on a plane (within a quarter of a voxel, RMS),
   ///         or a parameter is out of range
@@ -105,6 +111,18 @@ public:
         choose_parameter(get_parameter(np, internal_np::df_l1_outlier_component_size), 0), stage_name);
     thinning_coefficient_ = DF_L1::internal::thinning_coefficient(np, stage_name);
     spur_length_ratio_ = DF_L1::internal::spur_length_ratio(np, stage_name);
+    method_ = DF_L1::internal::skeletonization_method(np);
+    number_of_samples_ = parameters::choose_parameter(parameters::get_parameter(np, internal_np::number_of_samples), std::size_t(1500));
+    DF_L1::internal::number_of_samples(np, points_.size(), stage_name); // range check
+    repulsion_coefficient_ = DF_L1::internal::repulsion_coefficient(np, stage_name);
+    initial_support_radius_set_ =
+      !parameters::is_default_parameter<NamedParameters, internal_np::df_l1_support_radius_t>::value;
+    if(initial_support_radius_set_)
+      initial_support_radius_ = DF_L1::internal::check_initial_support_radius(
+        choose_parameter(get_parameter(np, internal_np::df_l1_support_radius), 1.0), stage_name);
+    support_radius_growth_ = DF_L1::internal::support_radius_growth(np, stage_name);
+    branch_directionality_ = DF_L1::internal::branch_directionality(np, stage_name);
+    iterations_per_stage_ = DF_L1::internal::iterations_per_stage(np, stage_name);
   }
 
   /// \name Stages
@@ -197,6 +215,46 @@ public:
                parameters::spur_length_ratio(spur_length_ratio_))));
     DF_L1::assign_points_to_skeleton(points_, outliers_, initial_->graph);
   }
+
+  /// Contracts samples of the kept and added points onto the skeleton
+  /// (`contract_samples()`), tracing branches and bridges between stages.
+  void contract()
+  {
+    if(contracted_)
+      return;
+    extract_initial_skeleton();
+    std::vector<Point> all = kept_points();
+    all.insert(all.end(), added_points_.begin(), added_points_.end());
+    if(!initial_support_radius_set_)
+      initial_support_radius_ = DF_L1::internal::initial_support_radius(parameters::default_values(), diagonal_,
+                                                                        all.size(), stage_name);
+    contracted_ = std::make_unique<Contracted_samples>(DF_L1::contract_samples<ConcurrencyTag>(
+      all, *field_, *initial_,
+      parameters::skeletonization_method(method_,
+      parameters::repulsion_coefficient(repulsion_coefficient_,
+      parameters::initial_support_radius(initial_support_radius_,
+      parameters::support_radius_growth(support_radius_growth_,
+      parameters::branch_directionality(branch_directionality_,
+      parameters::number_of_iterations(iterations_per_stage_).number_of_samples(number_of_samples_))))))));
+  }
+
+  /// Builds the final skeleton from the contracted samples (`build_skeleton_graph()`)
+  /// and assigns every non-outlier input point to its nearest vertex.
+  void convert_to_skeleton()
+  {
+    if(skeleton_)
+      return;
+    contract();
+    skeleton_ = std::make_unique<Skeleton>(DF_L1::build_skeleton_graph(*contracted_, *field_, *initial_));
+    DF_L1::assign_points_to_skeleton(points_, outliers_, *skeleton_);
+  }
+
+  /// Runs every stage that has not run and copies the final skeleton into `skeleton`.
+  void operator()(Skeleton& skeleton)
+  {
+    convert_to_skeleton();
+    skeleton = *skeleton_;
+  }
   /// @}
 
   /// \name Results
@@ -219,6 +277,10 @@ public:
   const Distance_field& distance_field() { compute_distance_field(); return *field_; }
   /// the initial skeleton: the skeleton voxels S and a curve graph through them
   const Initial_skeleton& initial_skeleton() { extract_initial_skeleton(); return *initial_; }
+  /// the contracted samples, their branches, and the samples after every iteration
+  const Contracted_samples& contracted_samples() { contract(); return *contracted_; }
+  /// the final skeleton
+  const Skeleton& skeleton() { convert_to_skeleton(); return *skeleton_; }
   /// @}
 
   /// \name Parameters in use
@@ -236,6 +298,15 @@ public:
   int outlier_component_size() { remove_outlier_voxels(); return outlier_component_size_; }
   double thinning_coefficient() const { return thinning_coefficient_; } ///< c of Eq. 2
   double spur_length_ratio() const { return spur_length_ratio_; } ///< spur pruning of the initial graph
+  DF_L1::Skeletonization_method skeletonization_method() const { return method_; } ///< refinement method
+  std::size_t number_of_samples() const { return number_of_samples_; } ///< M requested (at most the points are used)
+  double repulsion_coefficient() const { return repulsion_coefficient_; } ///< u of Eq. 8
+  /// h0, the initial support radius (input units; derived from the kept and added points
+  /// once they are known)
+  double initial_support_radius() { if(!initial_support_radius_set_) contract(); return initial_support_radius_; }
+  double support_radius_growth() const { return support_radius_growth_; } ///< growth ratio of h between stages
+  double branch_directionality() const { return branch_directionality_; } ///< sigma threshold of branch points
+  int number_of_iterations() const { return iterations_per_stage_; } ///< maximum iterations per stage
   /// @}
 
   /// \name Setting derived parameters
@@ -264,6 +335,8 @@ public:
     grid_.reset();
     field_.reset();
     initial_.reset();
+    contracted_.reset();
+    skeleton_.reset();
   }
   /// @}
 
@@ -276,6 +349,8 @@ private:
     grid_.reset();
     field_.reset();
     initial_.reset();
+    contracted_.reset();
+    skeleton_.reset();
   }
 
   // Points on a plane (or a line) enclose no volume, yet the voxels between their samples
@@ -321,6 +396,14 @@ private:
   bool outlier_component_size_set_ = false; // otherwise derived from the grid
   double thinning_coefficient_ = 0.86;
   double spur_length_ratio_ = 1;
+  DF_L1::Skeletonization_method method_ = DF_L1::Skeletonization_method::DISTANCE_FIELD_GUIDED;
+  std::size_t number_of_samples_ = 1500;
+  double repulsion_coefficient_ = 0.35;
+  double initial_support_radius_ = 0;
+  bool initial_support_radius_set_ = false; // otherwise derived from the kept and added points
+  double support_radius_growth_ = 0.5;
+  double branch_directionality_ = 0.9;
+  int iterations_per_stage_ = 30;
 
   std::vector<bool> sparse_outliers_, outliers_;
   std::size_t sparse_outlier_count_ = 0, outlier_count_ = 0;
@@ -330,7 +413,33 @@ private:
   DF_L1::Outlier_voxel_statistics outlier_voxel_statistics_;
   std::unique_ptr<Distance_field> field_;
   std::unique_ptr<Initial_skeleton> initial_;
+  std::unique_ptr<Contracted_samples> contracted_;
+  std::unique_ptr<Skeleton> skeleton_;
 };
+
+/// \ingroup PkgDFL1SkeletonRef
+/// Computes the curve skeleton of a point cloud with the distance-field guided
+/// L1-median method in one call: `DF_L1_skeletonization` run to the end.
+///
+/// \tparam ConcurrencyTag `CGAL::Sequential_tag`, `CGAL::Parallel_tag` or
+///         `CGAL::Parallel_if_available_tag`; the result does not depend on the threads
+/// \tparam PointRange a model of `ConstRange`; its value type is the key type of the point map
+/// \tparam Skeleton `CGAL::DF_L1::Skeleton_graph<Traits>`, with `Traits` the kernel of the
+///         point map's value type (or the one given by `geom_traits`)
+/// \param points the input points
+/// \param skeleton receives the skeleton: each vertex has its point, its local radius and
+///        the indices of the input points it stands for (every non-outlier point belongs
+///        to exactly one vertex)
+/// \param np optional named parameters, those of the `DF_L1_skeletonization` constructor
+/// \throws DF_L1::Invalid_input on bad input or parameters
+template <class ConcurrencyTag = CGAL::Parallel_if_available_tag, class PointRange, class Traits,
+          class NamedParameters = parameters::Default_named_parameters>
+void extract_df_l1_skeleton(const PointRange& points, DF_L1::Skeleton_graph<Traits>& skeleton,
+                            const NamedParameters& np = parameters::default_values())
+{
+  DF_L1_skeletonization<Traits, ConcurrencyTag> skeletonization(points, np);
+  skeletonization(skeleton);
+}
 
 } // namespace CGAL
 

@@ -24,6 +24,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstddef>
 #include <string>
 
 namespace CGAL {
@@ -37,6 +38,11 @@ enum df_l1_upsampling_radius_t { df_l1_upsampling_radius };
 enum df_l1_thinning_coefficient_t { df_l1_thinning_coefficient };
 enum df_l1_outlier_component_size_t { df_l1_outlier_component_size };
 enum df_l1_spur_length_t { df_l1_spur_length };
+enum df_l1_method_t { df_l1_method };
+enum df_l1_repulsion_t { df_l1_repulsion };
+enum df_l1_support_radius_t { df_l1_support_radius };
+enum df_l1_support_radius_growth_t { df_l1_support_radius_growth };
+enum df_l1_branch_directionality_t { df_l1_branch_directionality };
 } // namespace internal_np
 
 namespace parameters {
@@ -86,12 +92,41 @@ CGAL_DF_L1_ADD_NAMED_PARAMETER(df_l1_outlier_component_size, outlier_component_s
 /// Terminal branches of the initial skeleton shorter than this many times the local
 /// radius at their junction are pruned (default 1).
 CGAL_DF_L1_ADD_NAMED_PARAMETER(df_l1_spur_length, spur_length_ratio)
+/// \ingroup PkgDFL1SkeletonNamedParameters
+/// The refinement method, a `CGAL::DF_L1::Skeletonization_method` (default
+/// `DISTANCE_FIELD_GUIDED`; `L1_MEDIAL` switches the guidance off, as a baseline).
+CGAL_DF_L1_ADD_NAMED_PARAMETER(df_l1_method, skeletonization_method)
+/// \ingroup PkgDFL1SkeletonNamedParameters
+/// u, the weight of the repulsion between samples in Eq. 8, in [0, 0.5) (default 0.35).
+CGAL_DF_L1_ADD_NAMED_PARAMETER(df_l1_repulsion, repulsion_coefficient)
+/// \ingroup PkgDFL1SkeletonNamedParameters
+/// h0, the initial support radius of the contraction (default 2 d_bb / cbrt(N), the paper's).
+CGAL_DF_L1_ADD_NAMED_PARAMETER(df_l1_support_radius, initial_support_radius)
+/// \ingroup PkgDFL1SkeletonNamedParameters
+/// The growth ratio of the support radius between stages, h <- (1 + ratio) h (default 0.5).
+CGAL_DF_L1_ADD_NAMED_PARAMETER(df_l1_support_radius_growth, support_radius_growth)
+/// \ingroup PkgDFL1SkeletonNamedParameters
+/// The directionality sigma above which a sample may become a branch point (default 0.9).
+CGAL_DF_L1_ADD_NAMED_PARAMETER(df_l1_branch_directionality, branch_directionality)
 
 #undef CGAL_DF_L1_ADD_NAMED_PARAMETER
 
 } // namespace parameters
 
 namespace DF_L1 {
+
+/// \ingroup PkgDFL1SkeletonRef
+/// The refinement method (named parameter `skeletonization_method`).
+enum class Skeletonization_method
+{
+  /// the paper's method: samples attracted to the initial skeleton, never moving to a
+  /// voxel of smaller distance value, adaptive support radius, inside-only bridges
+  DISTANCE_FIELD_GUIDED,
+  /// the plain L1-medial skeleton (Huang et al. 2013): the same engine with the guidance
+  /// off and a global support radius growing by stages
+  L1_MEDIAL
+};
+
 namespace internal {
 
 // Each parameter has one default and one range, read here by the stage that uses it and
@@ -191,6 +226,78 @@ double spur_length_ratio(const NamedParameters& np, const char* stage)
   if(!(ratio >= 0) || !std::isfinite(ratio))
     throw Invalid_input(std::string(stage) + ": spur_length_ratio must be a non-negative number");
   return ratio;
+}
+
+template <class NamedParameters>
+Skeletonization_method skeletonization_method(const NamedParameters& np)
+{
+  return parameters::choose_parameter(parameters::get_parameter(np, internal_np::df_l1_method),
+                                      Skeletonization_method::DISTANCE_FIELD_GUIDED);
+}
+
+// M, default 1500 (the paper's timings) but never more than the points.
+template <class NamedParameters>
+std::size_t number_of_samples(const NamedParameters& np, std::size_t points, const char* stage)
+{
+  const std::size_t m = parameters::choose_parameter(parameters::get_parameter(np, internal_np::number_of_samples),
+                                                     std::size_t(1500));
+  if(m < 1)
+    throw Invalid_input(std::string(stage) + ": number_of_samples must be at least 1");
+  return (std::min)(m, points);
+}
+
+template <class NamedParameters>
+double repulsion_coefficient(const NamedParameters& np, const char* stage)
+{
+  const double u = parameters::choose_parameter(parameters::get_parameter(np, internal_np::df_l1_repulsion), 0.35);
+  if(!(u >= 0 && u < 0.5))
+    throw Invalid_input(std::string(stage) + ": repulsion_coefficient must be in [0, 0.5)");
+  return u;
+}
+
+inline double check_initial_support_radius(double h, const char* stage)
+{
+  if(!(h > 0) || !std::isfinite(h))
+    throw Invalid_input(std::string(stage) + ": initial_support_radius must be positive and finite");
+  return h;
+}
+
+// h0 = 2 d_bb / cbrt(N) (the paper).
+template <class NamedParameters>
+double initial_support_radius(const NamedParameters& np, double diagonal, std::size_t n, const char* stage)
+{
+  return check_initial_support_radius(
+    parameters::choose_parameter(parameters::get_parameter(np, internal_np::df_l1_support_radius),
+                                 2 * diagonal / std::cbrt(double((std::max)(n, std::size_t(1))))),
+    stage);
+}
+
+template <class NamedParameters>
+double support_radius_growth(const NamedParameters& np, const char* stage)
+{
+  const double r = parameters::choose_parameter(parameters::get_parameter(np, internal_np::df_l1_support_radius_growth), 0.5);
+  if(!(r > 0 && r <= 4))
+    throw Invalid_input(std::string(stage) + ": support_radius_growth must be in (0, 4]");
+  return r;
+}
+
+template <class NamedParameters>
+double branch_directionality(const NamedParameters& np, const char* stage)
+{
+  const double s = parameters::choose_parameter(parameters::get_parameter(np, internal_np::df_l1_branch_directionality), 0.9);
+  if(!(s > 1.0 / 3 && s < 1))
+    throw Invalid_input(std::string(stage) + ": branch_directionality must be in (1/3, 1)");
+  return s;
+}
+
+// Maximum number of iterations of one support-radius stage (CGAL's number_of_iterations).
+template <class NamedParameters>
+int iterations_per_stage(const NamedParameters& np, const char* stage)
+{
+  const int n = parameters::choose_parameter(parameters::get_parameter(np, internal_np::number_of_iterations), 30);
+  if(n < 1 || n > 10000)
+    throw Invalid_input(std::string(stage) + ": number_of_iterations must be in [1, 10000]");
+  return n;
 }
 
 } // namespace internal

@@ -74,14 +74,17 @@ bool walk_segment(const Grid_geometry<Traits>& grid, const typename Traits::Poin
   return true;
 }
 
-// Whether the segment pq crosses no exterior voxel and does not leave the grid: the test
-// that a bridge between two skeleton points stays inside the shape.
+// Whether the segment pq crosses no exterior or outlier voxel and does not leave the
+// grid: the test that a bridge between two skeleton points stays inside the shape.
 template <class Traits>
 bool segment_stays_inside(const Grid_geometry<Traits>& grid, const std::vector<Voxel_label>& labels,
                           const typename Traits::Point_3& p, const typename Traits::Point_3& q)
 {
   return walk_segment(grid, p, q, [&](int i, int j, int k) {
-    return grid.contains(i, j, k) && labels[grid.index(i, j, k)] != Voxel_label::EXTERIOR;
+    if(!grid.contains(i, j, k))
+      return false;
+    const Voxel_label l = labels[grid.index(i, j, k)];
+    return l == Voxel_label::BOUNDARY || l == Voxel_label::INTERIOR;
   });
 }
 

@@ -1,0 +1,309 @@
+// Copyright (c) 2026 DF_L1_skeleton contributors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+#ifndef CGAL_DF_L1_SKELETON_INTERNAL_CURVE_GRAPH_EDITING_H
+#define CGAL_DF_L1_SKELETON_INTERNAL_CURVE_GRAPH_EDITING_H
+
+#include <CGAL/DF_L1_skeleton/internal/l1_median_iteration.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <functional>
+#include <limits>
+#include <queue>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace DF_L1 {
+namespace internal {
+
+// A small editable curve graph (points and adjacency lists, vertices removed by flag) for
+// finishing the skeleton; converted to the public boost graph at the end.
+struct Curve_graph
+{
+  std::vector<Vec3> x;
+  std::vector<std::vector<std::size_t>> adj;
+  std::vector<char> alive;
+
+  std::size_t add_vertex(const Vec3& p)
+  {
+    x.push_back(p);
+    adj.emplace_back();
+    alive.push_back(1);
+    return x.size() - 1;
+  }
+  bool adjacent(std::size_t a, std::size_t b) const
+  {
+    return std::find(adj[a].begin(), adj[a].end(), b) != adj[a].end();
+  }
+  void add_edge(std::size_t a, std::size_t b)
+  {
+    if(a != b && !adjacent(a, b))
+    {
+      adj[a].push_back(b);
+      adj[b].push_back(a);
+    }
+  }
+  void remove_edge(std::size_t a, std::size_t b)
+  {
+    adj[a].erase(std::remove(adj[a].begin(), adj[a].end(), b), adj[a].end());
+    adj[b].erase(std::remove(adj[b].begin(), adj[b].end(), a), adj[b].end());
+  }
+  void remove_vertex(std::size_t v)
+  {
+    for(std::size_t w : std::vector<std::size_t>(adj[v]))
+      remove_edge(v, w);
+    alive[v] = 0;
+  }
+  std::size_t degree(std::size_t v) const { return adj[v].size(); }
+  double length(std::size_t a, std::size_t b) const { return distance(x[a], x[b]); }
+
+  // component label of each live vertex (npos for removed ones), and their number
+  std::size_t components(std::vector<std::size_t>& label) const
+  {
+    label.assign(x.size(), npos);
+    std::size_t count = 0;
+    for(std::size_t s = 0; s < x.size(); ++s)
+    {
+      if(!alive[s] || label[s] != npos)
+        continue;
+      std::vector<std::size_t> stack{s};
+      label[s] = count;
+      while(!stack.empty())
+      {
+        const std::size_t v = stack.back();
+        stack.pop_back();
+        for(std::size_t w : adj[v])
+          if(label[w] == npos)
+          {
+            label[w] = count;
+            stack.push_back(w);
+          }
+      }
+      ++count;
+    }
+    return count;
+  }
+
+  // first Betti number of each component: E - V + 1
+  std::vector<long> cycles_per_component(const std::vector<std::size_t>& label, std::size_t count) const
+  {
+    std::vector<long> vertices(count, 0), twice_edges(count, 0), c(count);
+    for(std::size_t v = 0; v < x.size(); ++v)
+      if(alive[v])
+      {
+        ++vertices[label[v]];
+        twice_edges[label[v]] += long(adj[v].size());
+      }
+    for(std::size_t k = 0; k < count; ++k)
+      c[k] = twice_edges[k] / 2 - vertices[k] + 1;
+    return c;
+  }
+
+  // The shortest path from a to b that does not use the edge ab (empty when that edge is
+  // a bridge of the graph), and its length.
+  std::vector<std::size_t> detour(std::size_t a, std::size_t b, double& path_length) const
+  {
+    std::vector<double> dist(x.size(), std::numeric_limits<double>::infinity());
+    std::vector<std::size_t> from(x.size(), npos);
+    typedef std::pair<double, std::size_t> Item;
+    std::priority_queue<Item, std::vector<Item>, std::greater<Item>> queue;
+    dist[a] = 0;
+    queue.push({0, a});
+    path_length = std::numeric_limits<double>::infinity();
+    while(!queue.empty())
+    {
+      const Item top = queue.top();
+      queue.pop();
+      if(top.first > dist[top.second])
+        continue;
+      if(top.second == b)
+        break;
+      for(std::size_t w : adj[top.second])
+      {
+        if(top.second == a && w == b)
+          continue;
+        const double d = top.first + length(top.second, w);
+        if(d < dist[w])
+        {
+          dist[w] = d;
+          from[w] = top.second;
+          queue.push({d, w});
+        }
+      }
+    }
+    std::vector<std::size_t> path;
+    if(from[b] == npos)
+      return path;
+    path_length = dist[b];
+    for(std::size_t v = b; v != a; v = from[v])
+      path.push_back(v);
+    path.push_back(a);
+    std::reverse(path.begin(), path.end());
+    return path;
+  }
+
+  // The shortest cycle among the vertices with component label c, as a closed vertex
+  // sequence (first vertex not repeated); empty when the component is a tree.
+  std::vector<std::size_t> shortest_cycle(const std::vector<std::size_t>& label, std::size_t c) const
+  {
+    std::vector<std::size_t> best;
+    double best_length = std::numeric_limits<double>::infinity();
+    for(std::size_t u = 0; u < x.size(); ++u)
+      if(alive[u] && label[u] == c)
+        for(std::size_t w : adj[u])
+        {
+          if(w < u)
+            continue;
+          double len = 0;
+          std::vector<std::size_t> path = detour(u, w, len);
+          if(!path.empty() && len + length(u, w) < best_length)
+          {
+            best_length = len + length(u, w);
+            best = std::move(path);
+          }
+        }
+    return best;
+  }
+
+  // Removes the terminal chains (from an end point to the first vertex of degree 3 or
+  // more) shorter than `too_short(junction, tip)`, repeatedly, never removing a whole
+  // component.
+  template <class Threshold>
+  void prune_spurs(const Threshold& too_short)
+  {
+    for(bool changed = true; changed;)
+    {
+      changed = false;
+      for(std::size_t e = 0; e < x.size(); ++e)
+      {
+        if(!alive[e] || adj[e].size() != 1)
+          continue;
+        std::vector<std::size_t> chain{e};
+        double len = 0;
+        std::size_t prev = e, v = adj[e][0];
+        while(adj[v].size() == 2)
+        {
+          chain.push_back(v);
+          len += length(prev, v);
+          const std::size_t next = adj[v][0] == prev ? adj[v][1] : adj[v][0];
+          prev = v;
+          v = next;
+        }
+        len += length(prev, v);
+        if(adj[v].size() < 3 || len >= too_short(v, e))
+          continue;
+        for(std::size_t c : chain)
+          remove_vertex(c);
+        changed = true;
+      }
+    }
+  }
+
+  // Three passes of Laplacian smoothing of the vertices of degree 2 (ends and junctions
+  // stay, so that branches keep their length and meet where they met).
+  void smooth(int passes)
+  {
+    for(int p = 0; p < passes; ++p)
+    {
+      const std::vector<Vec3> old = x;
+      for(std::size_t v = 0; v < x.size(); ++v)
+        if(alive[v] && adj[v].size() == 2)
+          x[v] = 0.5 * old[v] + 0.25 * (old[adj[v][0]] + old[adj[v][1]]);
+    }
+  }
+
+  // The chains between vertices of degree other than 2 (and the closed loops without such
+  // a vertex), as vertex sequences.
+  std::vector<std::vector<std::size_t>> chains() const
+  {
+    std::vector<std::vector<std::size_t>> out;
+    std::vector<char> done_edge_at(x.size(), 0);
+    std::vector<char> visited(x.size(), 0);
+    const auto walk = [&](std::size_t start, std::size_t first) {
+      std::vector<std::size_t> chain{start};
+      std::size_t prev = start, v = first;
+      for(;;)
+      {
+        chain.push_back(v);
+        if(adj[v].size() != 2 || v == start)
+          break;
+        visited[v] = 1;
+        const std::size_t next = adj[v][0] == prev ? adj[v][1] : adj[v][0];
+        prev = v;
+        v = next;
+      }
+      return chain;
+    };
+    for(std::size_t s = 0; s < x.size(); ++s)
+    {
+      if(!alive[s] || adj[s].size() == 2)
+        continue;
+      for(std::size_t w : adj[s])
+      {
+        // each chain is found from both ends: keep it from its lower end, or from the
+        // lower first step when both ends are the same vertex
+        std::vector<std::size_t> chain = walk(s, w);
+        const std::size_t t = chain.back();
+        if(t < s || (t == s && chain[chain.size() - 2] < w))
+          continue;
+        out.push_back(std::move(chain));
+      }
+    }
+    for(std::size_t s = 0; s < x.size(); ++s) // loops made of degree-2 vertices only
+    {
+      if(!alive[s] || adj[s].size() != 2 || visited[s])
+        continue;
+      visited[s] = 1;
+      out.push_back(walk(s, adj[s][0]));
+    }
+    return out;
+  }
+
+  // A copy with every chain replaced by points spaced about `step` apart along it (at
+  // least one segment per chain, two for a closed loop, three for a loop on itself).
+  Curve_graph resampled(double step) const
+  {
+    Curve_graph out;
+    std::vector<std::size_t> kept(x.size(), npos);
+    const auto vertex = [&](std::size_t v) {
+      if(kept[v] == npos)
+        kept[v] = out.add_vertex(x[v]);
+      return kept[v];
+    };
+    for(std::size_t v = 0; v < x.size(); ++v)
+      if(alive[v] && adj[v].empty())
+        vertex(v);
+    for(const std::vector<std::size_t>& chain : chains())
+    {
+      std::vector<double> at{0};
+      for(std::size_t i = 1; i < chain.size(); ++i)
+        at.push_back(at.back() + length(chain[i - 1], chain[i]));
+      const bool loop = chain.front() == chain.back();
+      const int pieces = (std::max)(loop ? 3 : 1, int(std::lround(at.back() / step)));
+      std::size_t prev = vertex(chain.front());
+      std::size_t seg = 1;
+      for(int k = 1; k < pieces; ++k)
+      {
+        const double s = at.back() * k / pieces;
+        while(seg + 1 < at.size() && at[seg] < s)
+          ++seg;
+        const double t = at[seg] > at[seg - 1] ? (s - at[seg - 1]) / (at[seg] - at[seg - 1]) : 0;
+        const std::size_t v = out.add_vertex(x[chain[seg - 1]] + t * (x[chain[seg]] - x[chain[seg - 1]]));
+        out.add_edge(prev, v);
+        prev = v;
+      }
+      out.add_edge(prev, vertex(chain.back()));
+    }
+    return out;
+  }
+
+  static constexpr std::size_t npos = std::size_t(-1);
+};
+
+} // namespace internal
+} // namespace DF_L1
+} // namespace CGAL
+
+#endif // CGAL_DF_L1_SKELETON_INTERNAL_CURVE_GRAPH_EDITING_H

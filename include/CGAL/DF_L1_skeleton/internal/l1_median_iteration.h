@@ -1,0 +1,192 @@
+// Copyright (c) 2026 DF_L1_skeleton contributors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+#ifndef CGAL_DF_L1_SKELETON_INTERNAL_L1_MEDIAN_ITERATION_H
+#define CGAL_DF_L1_SKELETON_INTERNAL_L1_MEDIAN_ITERATION_H
+
+#include <CGAL/DF_L1_skeleton/Voxel_grid.h>
+#include <CGAL/DF_L1_skeleton/distance_field.h>
+#include <CGAL/DF_L1_skeleton/internal/grid_walk.h>
+#include <CGAL/DF_L1_skeleton/internal/parallel_for.h>
+#include <CGAL/DF_L1_skeleton/internal/sample_selection.h>
+#include <CGAL/DF_L1_skeleton/internal/uniform_grid.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <vector>
+
+namespace CGAL {
+namespace DF_L1 {
+namespace internal {
+
+inline Vec3 operator+(const Vec3& a, const Vec3& b) { return {{a[0] + b[0], a[1] + b[1], a[2] + b[2]}}; }
+inline Vec3 operator-(const Vec3& a, const Vec3& b) { return {{a[0] - b[0], a[1] - b[1], a[2] - b[2]}}; }
+inline Vec3 operator*(double s, const Vec3& a) { return {{s * a[0], s * a[1], s * a[2]}}; }
+inline double dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+inline double norm(const Vec3& a) { return std::sqrt(dot(a, a)); }
+inline double distance(const Vec3& a, const Vec3& b) { return norm(a - b); }
+inline Vec3 normalized(const Vec3& a)
+{
+  const double n = norm(a);
+  return n > 0 ? (1 / n) * a : Vec3{{0, 0, 0}};
+}
+
+// The voxels as the contraction sees them: the distance value and whether a point is in
+// the shape, looked up in double precision.
+template <class Traits>
+class Field_lookup
+{
+public:
+  explicit Field_lookup(const Distance_field<Traits>& field)
+    : field_(field), values_(field.values), labels_(field.labels), dims_(field.dims),
+      origin_{{CGAL::to_double(field.origin.x()), CGAL::to_double(field.origin.y()), CGAL::to_double(field.origin.z())}},
+      voxel_(CGAL::to_double(field.voxel_size))
+  {}
+
+  double voxel_size() const { return voxel_; }
+
+  // linear index of the voxel that holds p, or npos outside the grid
+  std::size_t voxel(const Vec3& p) const
+  {
+    std::array<int, 3> c;
+    for(int a = 0; a < 3; ++a)
+    {
+      const double x = std::floor((p[a] - origin_[a]) / voxel_);
+      if(!(x >= 0 && x < dims_[a]))
+        return npos;
+      c[a] = int(x);
+    }
+    return (std::size_t(c[2]) * dims_[1] + c[1]) * dims_[0] + c[0];
+  }
+  // distance value at p in input units (0 outside the grid)
+  double distance(const Vec3& p) const
+  {
+    const std::size_t v = voxel(p);
+    return v == npos ? 0 : values_[v] * voxel_;
+  }
+  // whether p lies in a boundary or interior voxel
+  bool in_shape(const Vec3& p) const
+  {
+    const std::size_t v = voxel(p);
+    return v != npos && (labels_[v] == Voxel_label::BOUNDARY || labels_[v] == Voxel_label::INTERIOR);
+  }
+  // The distance-field constraint of section 6.1: a step from p to q is allowed unless q
+  // is outside the shape or in a voxel of smaller distance value than p's.
+  bool allows_step(const Vec3& p, const Vec3& q) const
+  {
+    const std::size_t vq = voxel(q);
+    if(vq == npos || !(labels_[vq] == Voxel_label::BOUNDARY || labels_[vq] == Voxel_label::INTERIOR))
+      return false;
+    const std::size_t vp = voxel(p);
+    return vp == npos || values_[vq] >= values_[vp];
+  }
+
+  // whether the segment ab crosses only boundary and interior voxels (section 6.1's test
+  // of a bridge), walking the grid voxel by voxel
+  bool segment_inside(const Vec3& a, const Vec3& b) const
+  {
+    typedef typename Traits::Point_3 Point_3;
+    return segment_stays_inside(field_, labels_, Point_3(a[0], a[1], a[2]), Point_3(b[0], b[1], b[2]));
+  }
+
+  static constexpr std::size_t npos = std::numeric_limits<std::size_t>::max();
+
+private:
+  const Distance_field<Traits>& field_;
+  const std::vector<float>& values_;
+  const std::vector<Voxel_label>& labels_;
+  std::array<int, 3> dims_;
+  Vec3 origin_;
+  double voxel_;
+};
+
+// Weighted sums over the points of a ball, for the three terms of Eq. 8.
+struct Ball_sums
+{
+  double weight = 0;      // sum of the weights
+  Vec3 moment{{0, 0, 0}}; // sum of weight * point
+  std::size_t count = 0;  // points in the ball
+  Vec3 mean() const { return (1 / weight) * moment; }
+};
+
+// Sums theta(r) / r^power (power 0, 1 or 2) over the points of `grid` within h of x, r clamped below at
+// 1e-3 h as in the L1-medial code (a sample sitting on a point must not divide by zero).
+inline Ball_sums ball_sums(const Uniform_grid& grid, const std::vector<Vec3>& points, const Vec3& x, double h,
+                           int power, std::size_t skip = std::size_t(-1))
+{
+  Ball_sums s;
+  const double inv = 4 / (h * h), floor2 = 1e-6 * h * h;
+  grid.for_each_in_ball(x, h, [&](std::size_t j, double d2) {
+    if(j == skip)
+      return true;
+    const double r2 = (std::max)(d2, floor2);
+    const double theta = std::exp(-d2 * inv);
+    const double w = power == 0 ? theta : (power == 1 ? theta / std::sqrt(r2) : theta / r2);
+    s.weight += w;
+    s.moment = s.moment + w * points[j];
+    ++s.count;
+    return true;
+  });
+  return s;
+}
+
+// One fixed-point iteration of Eq. 8 for every free sample, all from the previous
+// iterate (Jacobi), so the result does not depend on the order or the threads.
+//
+// With A the weighted L1 median of the input points (weights alpha_ij = theta / r), B
+// that of the initial-skeleton points (alpha_ik), R the repulsion mean of the other
+// samples (beta_ii' = theta / r^2), v = w_i sum_k alpha_ik / sum_j alpha_ij and the
+// repulsion u, Eq. 7 reads (1 + v - u) x + u R = A + v B. The paper iterates
+// x <- (u - v) x + A + v B - u R, which diverges once v > 1 + u, and v grows large as a
+// sample nears the initial skeleton. We iterate the same equation in the convergent
+// form x <- (A + v B + u (x - R)) / (1 + v): same fixed point, contraction factor
+// u / (1 + v) < 1/2. Without the skeleton term (v = 0) it is the L1-medial update.
+//
+// The weight of the skeleton term, theta_i(n/N) in the paper, is read as w_i = N_i / n_i
+// (N_i input points and n_i skeleton points in the ball): the skeleton points then weigh
+// as much in total as the input points, whatever the sampling density, and v is the
+// ratio of their mean attractions, small while the sample is far from S and large once
+// it is close. Taken literally (n e^{-(n/N)^2}, about n) the pull would fade as the scan
+// gets denser.
+struct L1_median_step
+{
+  const std::vector<Vec3>& input;       // Q
+  const Uniform_grid& input_grid;
+  const std::vector<Vec3>& attractors;  // S (empty for the plain L1-medial method)
+  const Uniform_grid* attractor_grid;   // null without S
+  double repulsion;                     // u
+
+  Vec3 operator()(const std::vector<Vec3>& samples, const Uniform_grid& sample_grid, std::size_t i, double h) const
+  {
+    const Vec3& x = samples[i];
+    const Ball_sums q = ball_sums(input_grid, input, x, h, 1);
+    Ball_sums s;
+    if(attractor_grid != nullptr)
+      s = ball_sums(*attractor_grid, attractors, x, h, 1);
+    const Ball_sums r = ball_sums(sample_grid, samples, x, h, 2, i);
+    double data_weight = 1, v = 0;
+    Vec3 target{{0, 0, 0}};
+    if(q.count > 0)
+      target = q.mean();
+    else
+      data_weight = 0;
+    if(s.count > 0)
+    {
+      v = q.count > 0 ? (double(q.count) / double(s.count)) * s.weight / q.weight : 1;
+      target = target + v * s.mean();
+    }
+    if(data_weight + v == 0)
+      return x; // nothing in reach: stay
+    if(r.count > 0)
+      target = target + repulsion * (x - r.mean());
+    return (1 / (data_weight + v)) * target;
+  }
+};
+
+} // namespace internal
+} // namespace DF_L1
+} // namespace CGAL
+
+#endif // CGAL_DF_L1_SKELETON_INTERNAL_L1_MEDIAN_ITERATION_H
