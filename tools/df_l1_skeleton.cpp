@@ -18,10 +18,12 @@
 
 #include <sys/resource.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <iomanip>
 #include <iostream>
+#include <iterator>
 #include <memory>
 #include <sstream>
 #include <string>
@@ -35,11 +37,22 @@ namespace DF = CGAL::DF_L1;
 namespace params = CGAL::parameters;
 using df_l1_tool::Usage_error;
 
-const char* const STAGES[] = {"voxels", "distance", "initial"};
+// The stages the tool can stop after, in pipeline order.
+const char* const STAGES[] = {"voxels", "distance", "initial", "final"};
+
+// Position of a stage in STAGES, -1 if unknown.
+int stage_index(const std::string& stage)
+{
+  for(int i = 0; i < int(std::size(STAGES)); ++i)
+    if(stage == STAGES[i])
+      return i;
+  return -1;
+}
 
 struct Settings
 {
-  std::string input, output, report, preview, stage = "initial";
+  std::string input, output, report, preview, stage = "final";
+  bool preview_stages = false;
   int threads = 0; // 0: all cores
   long seed = 0;
   bool quiet = false;
@@ -53,6 +66,13 @@ struct Settings
   int outlier_component_size = -1;
   double thinning_coefficient = 0.86;
   double spur_length_ratio = 1.0;
+  std::string method = "df_l1"; // df_l1 or l1
+  long samples = 1500;
+  double repulsion = 0.35;
+  double support_radius = NAN;
+  double support_growth = 0.5;
+  double branch_sigma = 0.9;
+  int iterations = 30;
 };
 
 double peak_memory_mib()
@@ -95,6 +115,14 @@ public:
     entries_.emplace_back(key, value);
     return *this;
   }
+  // On one line: {"a": 1, "b": 2}.
+  std::string inline_str() const
+  {
+    std::string s = "{";
+    for(std::size_t i = 0; i < entries_.size(); ++i)
+      s += (i ? ", \"" : "\"") + entries_[i].first + "\": " + entries_[i].second;
+    return s + "}";
+  }
   std::string str(const std::string& indent = "") const
   {
     std::string s = "{";
@@ -136,16 +164,18 @@ std::vector<df_l1_tool::Option> option_table(Settings& s, bool& help, bool& vers
   using df_l1_tool::parse_integer;
   using df_l1_tool::parse_number;
   return {
-    {"stage", "STAGE", "initial", "stop after this stage: voxels, distance or initial",
+    {"stage", "STAGE", "final", "stop after this stage: voxels, distance, initial or final",
      [&](const std::string& v) {
-       if(v != "voxels" && v != "distance" && v != "initial")
-         throw Usage_error("--stage must be voxels, distance or initial, got '" + v + "'");
+       if(stage_index(v) < 0)
+         throw Usage_error("--stage must be voxels, distance, initial or final, got '" + v + "'");
        s.stage = v;
      }},
     {"report", "FILE.json", "none", "write the parameters used, timings and counts as JSON",
      [&](const std::string& v) { s.report = v; }},
     {"preview", "FILE.svg", "none", "write front, side and top views of the points and the skeleton",
      [&](const std::string& v) { s.preview = v; }},
+    {"preview-stages", "", "off", "with --stage final: add a row with the initial skeleton to the preview",
+     [&](const std::string&) { s.preview_stages = true; }},
     {"threads", "N", "all cores", "number of threads",
      [&](const std::string& v) { s.threads = int(parse_integer("threads", v, 1, 1024)); }},
     {"seed", "S", "0", "random seed (the current stages are deterministic and draw no random numbers)",
@@ -189,6 +219,40 @@ std::vector<df_l1_tool::Option> option_table(Settings& s, bool& help, bool& vers
        if(!(s.spur_length_ratio >= 0))
          throw Usage_error("--spur-length-ratio must not be negative");
      }},
+    {"method", "METHOD", "df_l1", "refinement: df_l1 (distance-field guided) or l1 (plain L1-medial skeleton)",
+     [&](const std::string& v) {
+       if(v != "df_l1" && v != "l1")
+         throw Usage_error("--method must be df_l1 or l1, got '" + v + "'");
+       s.method = v;
+     }},
+    {"samples", "M", "1500", "samples contracted (at most the points), in [1, 100000000]",
+     [&](const std::string& v) { s.samples = parse_integer("samples", v, 1, 100000000L); }},
+    {"repulsion", "U", "0.35", "u, weight of the repulsion between samples, in [0, 0.5)",
+     [&](const std::string& v) {
+       s.repulsion = parse_number("repulsion", v);
+       if(!(s.repulsion >= 0 && s.repulsion < 0.5))
+         throw Usage_error("--repulsion must be in [0, 0.5), got " + v);
+     }},
+    {"support-radius", "H0", "2*d_bb/cbrt(N)", "h0, initial support radius of the contraction (input units)",
+     [&](const std::string& v) {
+       s.support_radius = parse_number("support-radius", v);
+       if(!(s.support_radius > 0))
+         throw Usage_error("--support-radius must be positive, got " + v);
+     }},
+    {"support-growth", "R", "0.5", "growth of the support radius between stages, h <- (1+R) h, in (0, 4]",
+     [&](const std::string& v) {
+       s.support_growth = parse_number("support-growth", v);
+       if(!(s.support_growth > 0 && s.support_growth <= 4))
+         throw Usage_error("--support-growth must be in (0, 4], got " + v);
+     }},
+    {"branch-sigma", "S", "0.9", "directionality above which a sample may become a branch point, in (1/3, 1)",
+     [&](const std::string& v) {
+       s.branch_sigma = parse_number("branch-sigma", v);
+       if(!(s.branch_sigma > 1.0 / 3 && s.branch_sigma < 1))
+         throw Usage_error("--branch-sigma must be in (1/3, 1), got " + v);
+     }},
+    {"iterations", "N", "30", "maximum iterations per support-radius stage of the contraction, in [1, 10000]",
+     [&](const std::string& v) { s.iterations = int(parse_integer("iterations", v, 1, 10000)); }},
     {"help", "", "", "show this help", [&](const std::string&) { help = true; }},
     {"version", "", "", "show the version", [&](const std::string&) { version = true; }},
   };
@@ -197,11 +261,14 @@ std::vector<df_l1_tool::Option> option_table(Settings& s, bool& help, bool& vers
 void print_help(const std::vector<df_l1_tool::Option>& table)
 {
   std::cout << "usage: df_l1_skeleton [INPUT] [OUTPUT] [options]\n\n"
-               "Extracts the curve skeleton of a point cloud (distance-field guided L1-median).\n\n"
+               "Extracts the curve skeleton of a point cloud (distance-field guided L1-median).\n"
+               "Stages: voxels < distance < initial (voxel thinning) < final (L1-median contraction\n"
+               "of samples onto the skeleton, then the skeleton graph); --stage stops after one.\n\n"
                "INPUT   .xyz .pts .txt (x y z [nx ny nz ...]), .ply (ascii or binary), .off;\n"
                "        default: the bundled example " DF_L1_DEFAULT_INPUT "\n"
                "OUTPUT  by extension: .obj (v/l lines), .ply (vertex x y z radius, edge),\n"
-               "        .polylines.txt (one 'n x1 y1 z1 ...' line per branch); default skeleton.obj.\n"
+               "        .polylines.txt (one 'n x1 y1 z1 ...' line per branch); default skeleton.obj;\n"
+               "        the final skeleton, or the initial one with --stage initial.\n"
                "        With --stage voxels or distance: a .ply of the voxel centres with their\n"
                "        label (0 exterior, 1 boundary, 2 interior, 3 outlier; exterior voxels are\n"
                "        omitted) and distance (input units; -1 when not computed); default voxels.ply.\n\n"
@@ -215,7 +282,10 @@ void print_help(const std::vector<df_l1_tool::Option>& table)
       std::cout << " (default: " << o.default_text << ")";
     std::cout << "\n";
   }
-  std::cout << "\nExit status: 0 success, 1 bad input or output, 2 bad usage.\n";
+  std::cout << "\nThe --report JSON has parameters (the values used, derived ones resolved), seconds per\n"
+               "stage and counts; with --stage final also the contraction's parameters and its\n"
+               "per-stage support radii (counts.contraction_stages).\n"
+               "\nExit status: 0 success, 1 bad input or output, 2 bad usage.\n";
 }
 
 bool has_suffix(std::string s, const std::string& suffix)
@@ -240,6 +310,12 @@ void write_voxels(const std::string& path, const DF::Voxel_grid<Kernel>& grid,
   DF::write_point_ply(path, centres, {label, distance});
 }
 
+// The number of samples contracted (junction points of bridges come on top of them).
+std::size_t contracted_count(const DF::Contracted_samples<Kernel>& c)
+{
+  return c.iterations.empty() ? 0 : c.iterations.front().size();
+}
+
 int run(const Settings& s)
 {
   std::unique_ptr<tbb::global_control> thread_limit;
@@ -252,13 +328,26 @@ int run(const Settings& s)
 
   // The library resolves the derived defaults; the report states what it used.
   typedef CGAL::DF_L1_skeletonization<Kernel> Skeletonization;
-  Skeletonization skeletonization(
-    points, params::voxel_resolution(s.voxel_resolution,
-            params::exterior_propagation_steps(s.exterior_propagation_steps,
-            params::upsampling(s.upsampling,
-            params::upsampling_neighbors(s.upsampling_neighbors,
-            params::thinning_coefficient(s.thinning_coefficient,
-            params::spur_length_ratio(s.spur_length_ratio)))))));
+  const DF::Skeletonization_method method =
+    s.method == "l1" ? DF::Skeletonization_method::L1_MEDIAL : DF::Skeletonization_method::DISTANCE_FIELD_GUIDED;
+  // number_of_samples and number_of_iterations are CGAL's (member functions), the others ours.
+  const auto np =
+    params::voxel_resolution(s.voxel_resolution,
+    params::exterior_propagation_steps(s.exterior_propagation_steps,
+    params::upsampling(s.upsampling,
+    params::upsampling_neighbors(s.upsampling_neighbors,
+    params::thinning_coefficient(s.thinning_coefficient,
+    params::spur_length_ratio(s.spur_length_ratio,
+    params::skeletonization_method(method,
+    params::repulsion_coefficient(s.repulsion,
+    params::support_radius_growth(s.support_growth,
+    params::branch_directionality(s.branch_sigma,
+    params::number_of_iterations(s.iterations).number_of_samples(std::size_t(s.samples))))))))))));
+  // h0 has no setter and its default is derived, so it can only be given at construction.
+  const std::unique_ptr<Skeletonization> owner =
+    std::isnan(s.support_radius) ? std::make_unique<Skeletonization>(points, np)
+                                 : std::make_unique<Skeletonization>(points, params::initial_support_radius(s.support_radius, np));
+  Skeletonization& skeletonization = *owner;
   if(!std::isnan(s.initial_voxel_size))
     skeletonization.set_initial_voxel_size(s.initial_voxel_size);
   if(!std::isnan(s.upsampling_radius))
@@ -284,8 +373,9 @@ int run(const Settings& s)
     stage("distance", &Skeletonization::compute_distance_field);
     field = &skeletonization.distance_field();
   }
+  const int last_stage = stage_index(s.stage);
   const DF::Initial_skeleton<Kernel>* initial = nullptr;
-  if(s.stage == "initial")
+  if(last_stage >= stage_index("initial"))
   {
     stage("initial", &Skeletonization::extract_initial_skeleton);
     initial = &skeletonization.initial_skeleton();
@@ -294,16 +384,32 @@ int run(const Settings& s)
                               std::to_string(s.voxel_resolution) +
                               " (flat, linear or too sparse input; try --stage voxels to look at the voxels)");
   }
+  const DF::Contracted_samples<Kernel>* contracted = nullptr;
+  const DF::Skeleton_graph<Kernel>* final_skeleton = nullptr;
+  if(last_stage >= stage_index("final"))
+  {
+    stage("contraction", &Skeletonization::contract);
+    contracted = &skeletonization.contracted_samples();
+    stage("skeleton", &Skeletonization::convert_to_skeleton);
+    final_skeleton = &skeletonization.skeleton();
+    if(boost::num_vertices(*final_skeleton) == 0)
+      throw DF::Invalid_input(s.input + ": no skeleton: the contraction of " + std::to_string(contracted_count(*contracted)) +
+                              " samples traced no branch (try --stage initial, or more --samples)");
+  }
+  // The skeleton written: the last one computed.
+  const DF::Skeleton_graph<Kernel>* skeleton = final_skeleton ? final_skeleton : initial ? &initial->graph : nullptr;
 
   clock.run("write", [&] {
-    if(initial)
-      DF::write_skeleton(s.output, initial->graph);
+    if(skeleton)
+      DF::write_skeleton(s.output, *skeleton);
     else
       write_voxels(s.output, grid, field);
     if(!s.preview.empty())
     {
       std::vector<DF::Preview_panel<Kernel>> rows;
-      if(initial)
+      if(final_skeleton)
+        rows.push_back({s.method == "l1" ? "final skeleton (l1)" : "final skeleton (df_l1)", final_skeleton});
+      if(initial && (!final_skeleton || s.preview_stages))
         rows.push_back({"initial skeleton", &initial->graph});
       DF::Preview_options options;
       options.title = s.input;
@@ -339,6 +445,14 @@ int run(const Settings& s)
                                      std::to_string(initial->thinning_parameters[1] * voxel_size) + ", " +
                                      std::to_string(initial->thinning_parameters[2] * voxel_size) + "]")
         .number("spur_length_ratio", skeletonization.spur_length_ratio());
+    if(contracted)
+      parameters.text("method", s.method)
+        .number("number_of_samples", double(skeletonization.number_of_samples()))
+        .number("repulsion_coefficient", skeletonization.repulsion_coefficient())
+        .number("initial_support_radius", skeletonization.initial_support_radius())
+        .number("support_radius_growth", skeletonization.support_radius_growth())
+        .number("branch_directionality", skeletonization.branch_directionality())
+        .number("number_of_iterations", skeletonization.number_of_iterations());
     Json_object counts;
     counts.number("input_points", double(points.size()))
       .number("added_points", double(skeletonization.added_points().size()))
@@ -354,16 +468,47 @@ int run(const Settings& s)
       .number("outlier_voxels", double(grid.count(DF::Voxel_label::OUTLIER)));
     if(field)
       counts.number("max_distance", CGAL::to_double(field->voxel_size) * field->maximum());
+    // skeleton_*: the skeleton written (the final one with --stage final);
+    // initial_skeleton_*: the initial one, when the final one was written.
+    const auto skeleton_counts = [&](const std::string& prefix, const DF::Skeleton_graph<Kernel>& g) {
+      const DF::Skeleton_statistics st = DF::skeleton_statistics(g);
+      counts.number(prefix + "vertices", double(st.vertices))
+        .number(prefix + "edges", double(st.edges))
+        .number(prefix + "components", double(st.components))
+        .number(prefix + "cycles", double(st.cycles))
+        .number(prefix + "end_points", double(st.end_points))
+        .number(prefix + "junctions", double(st.junctions));
+    };
     if(initial)
     {
-      const DF::Skeleton_statistics st = DF::skeleton_statistics(initial->graph);
-      counts.number("skeleton_voxels", double(initial->points.size()))
-        .number("skeleton_vertices", double(st.vertices))
-        .number("skeleton_edges", double(st.edges))
-        .number("skeleton_components", double(st.components))
-        .number("skeleton_cycles", double(st.cycles))
-        .number("skeleton_end_points", double(st.end_points))
-        .number("skeleton_junctions", double(st.junctions));
+      counts.number("skeleton_voxels", double(initial->points.size()));
+      skeleton_counts("skeleton_", *skeleton);
+    }
+    if(contracted)
+    {
+      skeleton_counts("initial_skeleton_", initial->graph);
+      std::string stages = "[";
+      for(std::size_t i = 0; i < contracted->stages.size(); ++i)
+      {
+        const DF::Contraction_stage& st = contracted->stages[i];
+        Json_object o;
+        o.number("iterations", st.iterations)
+          .number("min_radius", st.min_radius)
+          .number("mean_radius", st.mean_radius)
+          .number("max_radius", st.max_radius)
+          .number("free_samples", double(st.free_samples))
+          .number("branch_samples", double(st.branch_samples));
+        stages += (i ? ",\n      " : "\n      ") + o.inline_str();
+      }
+      stages += contracted->stages.empty() ? "]" : "\n    ]";
+      int iterations = 0;
+      for(const DF::Contraction_stage& st : contracted->stages)
+        iterations += st.iterations;
+      counts.number("samples", double(contracted_count(*contracted)))
+        .number("branch_points",
+                double(std::count(contracted->roles.begin(), contracted->roles.end(), DF::Sample_role::BRANCH)))
+        .number("iterations", iterations)
+        .raw("contraction_stages", stages);
     }
     Json_object report;
     report.text("input", s.input).text("output", s.output).text("version", DF_L1_VERSION)
@@ -400,7 +545,7 @@ int main(int argc, char** argv)
     if(positional.size() > 2)
       throw Usage_error("too many arguments (expected [INPUT] [OUTPUT])");
     settings.input = positional.size() > 0 ? positional[0] : DF_L1_DEFAULT_INPUT;
-    const bool voxel_stage = settings.stage != "initial";
+    const bool voxel_stage = stage_index(settings.stage) < stage_index("initial");
     settings.output = positional.size() > 1 ? positional[1] : (voxel_stage ? "voxels.ply" : "skeleton.obj");
     if(voxel_stage && !has_suffix(settings.output, ".ply"))
       throw Usage_error("--stage " + settings.stage + " writes voxels: OUTPUT must end in .ply");
@@ -411,6 +556,10 @@ int main(int argc, char** argv)
       throw Usage_error("--preview expects a .svg file");
     if(!settings.report.empty() && !has_suffix(settings.report, ".json"))
       throw Usage_error("--report expects a .json file");
+    if(settings.preview_stages && settings.preview.empty())
+      throw Usage_error("--preview-stages needs --preview FILE.svg");
+    if(settings.preview_stages && settings.stage != "final")
+      throw Usage_error("--preview-stages needs --stage final (it adds the initial skeleton under the final one)");
   }
   catch(const Usage_error& e)
   {
@@ -430,7 +579,8 @@ int main(int argc, char** argv)
   }
   catch(const std::bad_alloc&)
   {
-    std::cerr << "\ndf_l1_skeleton: " << settings.input << ": out of memory (try a lower --voxel-resolution)\n";
+    std::cerr << "\ndf_l1_skeleton: " << settings.input << ": out of memory (try a lower --voxel-resolution"
+              << (settings.stage == "final" ? " or --samples" : "") << ")\n";
   }
   catch(const std::exception& e)
   {

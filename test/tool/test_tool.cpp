@@ -2,14 +2,23 @@
 // naming the file, no output file on failure, outputs and report on success.
 #include <catch2/catch.hpp>
 
+#include "support/synthetic_shapes.h"
+
+#include <boost/property_tree/json_parser.hpp>
+#include <boost/property_tree/ptree.hpp>
+
 #include <sys/wait.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <numeric>
 #include <sstream>
 #include <string>
+#include <vector>
 
 namespace fs = std::filesystem;
 
@@ -74,6 +83,101 @@ std::string sphere_points(int n)
     s << r * std::cos(golden * i) << ' ' << r * std::sin(golden * i) << ' ' << z << '\n';
   }
   return s.str();
+}
+
+std::string quoted(const std::string& path) { return "\"" + path + "\""; }
+
+std::string read_text(const std::string& path)
+{
+  std::ifstream f(path, std::ios::binary);
+  std::stringstream s;
+  s << f.rdbuf();
+  return s.str();
+}
+
+// A clean synthetic shape of test/support/synthetic_shapes.h (what df_l1_generate writes).
+std::string shape_input(const Scratch& scratch, const std::string& shape, std::size_t n)
+{
+  const std::string path = scratch.path(shape + ".xyz");
+  DF_L1_test::write_xyz(path, DF_L1_test::make_sample(DF_L1_test::shape_by_name(shape), DF_L1_test::Variant::clean, n, 1).points);
+  return path;
+}
+
+// Parses the report; throws (and fails the test) if it is not valid JSON.
+boost::property_tree::ptree read_report(const std::string& path)
+{
+  boost::property_tree::ptree tree;
+  std::ifstream in(path);
+  boost::property_tree::read_json(in, tree);
+  return tree;
+}
+
+// The vertex count and connected components of an .obj polyline file, checking that it
+// has nothing but the header comment, `v x y z` and `l a b` lines with valid indices.
+struct Obj_graph
+{
+  std::size_t vertices = 0, edges = 0, components = 0;
+  bool well_formed = true;
+};
+
+Obj_graph read_obj_graph(const std::string& path)
+{
+  Obj_graph g;
+  std::vector<std::pair<long, long>> edges;
+  std::istringstream in(read_text(path));
+  std::string line;
+  while(std::getline(in, line))
+  {
+    std::istringstream fields(line);
+    std::string tag;
+    fields >> tag;
+    if(tag == "v")
+    {
+      double x, y, z;
+      g.well_formed = g.well_formed && bool(fields >> x >> y >> z);
+      ++g.vertices;
+    }
+    else if(tag == "l")
+    {
+      long a = 0, b = 0;
+      g.well_formed = g.well_formed && bool(fields >> a >> b);
+      edges.emplace_back(a - 1, b - 1);
+    }
+    else if(tag != "#")
+      g.well_formed = false;
+  }
+  g.edges = edges.size();
+  std::vector<std::size_t> parent(g.vertices);
+  std::iota(parent.begin(), parent.end(), std::size_t(0));
+  const auto find = [&](std::size_t v) {
+    while(parent[v] != v)
+      v = parent[v] = parent[parent[v]];
+    return v;
+  };
+  g.components = g.vertices;
+  for(const auto& e : edges)
+  {
+    if(e.first < 0 || e.second < 0 || std::size_t(e.first) >= g.vertices || std::size_t(e.second) >= g.vertices)
+    {
+      g.well_formed = false;
+      continue;
+    }
+    const std::size_t a = find(std::size_t(e.first)), b = find(std::size_t(e.second));
+    if(a != b)
+    {
+      parent[a] = b;
+      --g.components;
+    }
+  }
+  return g;
+}
+
+std::size_t count_of(const std::string& text, const std::string& what)
+{
+  std::size_t n = 0;
+  for(std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + what.size()))
+    ++n;
+  return n;
 }
 
 } // namespace
@@ -149,7 +253,7 @@ TEST_CASE("tool: a valid input gives the skeleton, the preview and a complete re
   {
     const std::string output = scratch.path("skeleton" + ext);
     const Run r = run_tool("\"" + input + "\" \"" + output + "\" --preview \"" + scratch.path("p.svg") +
-                           "\" --report \"" + scratch.path("r.json") + "\" --threads 1", scratch);
+                           "\" --report \"" + scratch.path("r.json") + "\" --threads 1 --samples 500", scratch);
     INFO(r.err);
     REQUIRE(r.status == 0);
     CHECK(fs::file_size(output) > 0);
@@ -196,4 +300,274 @@ TEST_CASE("tool: an unwritable output fails cleanly and leaves no file", "[tool]
   const Run r = run_tool("\"" + input + "\" \"" + scratch.path("no/such/dir/out.obj") + "\"", scratch);
   CHECK(r.status == 1);
   CHECK(r.err.find("out.obj") != std::string::npos);
+}
+
+TEST_CASE("tool: the default stage is final and writes one connected skeleton", "[tool][final]")
+{
+  const Scratch scratch;
+  const std::string input = shape_input(scratch, "y_junction", 3000);
+  const std::string output = scratch.path("default.obj"), report = scratch.path("default.json");
+  const Run r = run_tool(quoted(input) + " " + quoted(output) + " --report " + quoted(report) + " --threads 1", scratch);
+  INFO(r.err);
+  REQUIRE(r.status == 0);
+  const Obj_graph g = read_obj_graph(output);
+  CHECK(g.well_formed);
+  CHECK(g.vertices >= 2);
+  CHECK(g.edges >= 1);
+  CHECK(g.components == 1);
+
+  const auto tree = read_report(report);
+  CHECK(tree.get<std::string>("parameters.stage") == "final");
+  CHECK(tree.get<std::size_t>("counts.skeleton_vertices") == g.vertices);
+  CHECK(tree.get<std::size_t>("counts.skeleton_edges") == g.edges);
+  CHECK(tree.get<std::size_t>("counts.skeleton_components") == 1);
+  // The library's defaults, as the report states them.
+  CHECK(tree.get<std::string>("parameters.method") == "df_l1");
+  CHECK(tree.get<std::size_t>("parameters.number_of_samples") == 1500);
+  CHECK(tree.get<double>("parameters.repulsion_coefficient") == Approx(0.35));
+  CHECK(tree.get<double>("parameters.support_radius_growth") == Approx(0.5));
+  CHECK(tree.get<double>("parameters.branch_directionality") == Approx(0.9));
+  CHECK(tree.get<int>("parameters.number_of_iterations") == 30);
+  CHECK(tree.get<double>("parameters.initial_support_radius") > 0);
+
+  // --stage final is the same run.
+  const std::string explicit_output = scratch.path("final.obj");
+  REQUIRE(run_tool(quoted(input) + " " + quoted(explicit_output) + " --stage final --threads 1", scratch).status == 0);
+  CHECK(read_text(explicit_output) == read_text(output));
+}
+
+TEST_CASE("tool: the report of the final stage states the contraction", "[tool][final]")
+{
+  const Scratch scratch;
+  const std::string input = shape_input(scratch, "y_junction", 3000);
+  const double h0 = 0.15 * DF_L1_test::shape_by_name("y_junction").bbox_diagonal();
+  std::ostringstream h0_text;
+  h0_text << std::setprecision(17) << h0;
+  const std::string output = scratch.path("skeleton.ply"), report = scratch.path("r.json");
+  const Run r = run_tool(quoted(input) + " " + quoted(output) + " --report " + quoted(report) +
+                         " --samples 400 --repulsion 0.3 --support-radius " + h0_text.str() +
+                         " --support-growth 0.75 --branch-sigma 0.85 --iterations 12 --threads 1", scratch);
+  INFO(r.err);
+  REQUIRE(r.status == 0);
+  const std::string text = read_text(report);
+  INFO(text);
+  boost::property_tree::ptree tree;
+  REQUIRE_NOTHROW(tree = read_report(report)); // valid JSON
+  CHECK(text.find("nan") == std::string::npos);
+  CHECK(text.find("null") == std::string::npos);
+
+  // Every key of the earlier stages is still there.
+  for(const char* key : {"input", "output", "version", "peak_memory_mib", "parameters.stage", "parameters.threads",
+                         "parameters.seed", "parameters.bbox_diagonal", "parameters.upsampling",
+                         "parameters.upsampling_neighbors", "parameters.upsampling_radius", "parameters.voxel_resolution",
+                         "parameters.initial_voxel_size", "parameters.initial_voxel_size_used",
+                         "parameters.refinement_levels", "parameters.voxel_size", "parameters.exterior_propagation_steps",
+                         "parameters.outlier_component_size", "parameters.thinning_coefficient",
+                         "parameters.thinning_parameters", "parameters.spur_length_ratio", "seconds.read",
+                         "seconds.outlier_points", "seconds.upsampling", "seconds.voxelization", "seconds.outliers",
+                         "seconds.distance", "seconds.initial", "seconds.write", "counts.input_points",
+                         "counts.added_points", "counts.outlier_points", "counts.sparse_outlier_points",
+                         "counts.outlier_clusters", "counts.shape_components", "counts.grid", "counts.boundary_voxels",
+                         "counts.interior_voxels", "counts.exterior_voxels", "counts.outlier_voxels",
+                         "counts.max_distance", "counts.skeleton_voxels", "counts.skeleton_vertices",
+                         "counts.skeleton_edges", "counts.skeleton_components", "counts.skeleton_cycles",
+                         "counts.skeleton_end_points", "counts.skeleton_junctions",
+                         // and the new ones
+                         "seconds.contraction", "seconds.skeleton", "counts.initial_skeleton_vertices",
+                         "counts.initial_skeleton_edges", "counts.initial_skeleton_components",
+                         "counts.initial_skeleton_cycles", "counts.initial_skeleton_end_points",
+                         "counts.initial_skeleton_junctions", "counts.samples", "counts.branch_points",
+                         "counts.iterations", "counts.contraction_stages"})
+  {
+    INFO(key);
+    CHECK(bool(tree.get_child_optional(key)));
+  }
+  // The parameters given are the parameters used.
+  CHECK(tree.get<std::string>("parameters.method") == "df_l1");
+  CHECK(tree.get<std::size_t>("parameters.number_of_samples") == 400);
+  CHECK(tree.get<double>("parameters.repulsion_coefficient") == Approx(0.3));
+  CHECK(tree.get<double>("parameters.initial_support_radius") == Approx(h0));
+  CHECK(tree.get<double>("parameters.support_radius_growth") == Approx(0.75));
+  CHECK(tree.get<double>("parameters.branch_directionality") == Approx(0.85));
+  CHECK(tree.get<int>("parameters.number_of_iterations") == 12);
+
+  const std::size_t samples = tree.get<std::size_t>("counts.samples");
+  CHECK(samples > 0);
+  CHECK(samples <= 400);
+  CHECK(tree.get<std::size_t>("counts.branch_points") > 0);
+  const auto& stages = tree.get_child("counts.contraction_stages");
+  REQUIRE(!stages.empty());
+  int iterations = 0;
+  bool first = true;
+  for(const auto& entry : stages)
+  {
+    const auto& stage = entry.second;
+    CHECK(entry.first.empty()); // an array element
+    const int it = stage.get<int>("iterations");
+    CHECK(it >= 0);
+    CHECK(it <= 12);
+    iterations += it;
+    const double lo = stage.get<double>("min_radius"), mean = stage.get<double>("mean_radius"),
+                 hi = stage.get<double>("max_radius");
+    CHECK(lo > 0);
+    CHECK(lo <= mean * (1 + 1e-12));
+    CHECK(mean <= hi * (1 + 1e-12));
+    CHECK(stage.get<std::size_t>("free_samples") <= samples);
+    CHECK(bool(stage.get_child_optional("branch_samples")));
+    if(first)
+      CHECK(lo == Approx(h0)); // every sample starts with h0
+    first = false;
+  }
+  CHECK(tree.get<int>("counts.iterations") == iterations);
+}
+
+TEST_CASE("tool: --method l1 runs the plain L1-medial contraction", "[tool][final]")
+{
+  const Scratch scratch;
+  const std::string input = shape_input(scratch, "y_junction", 3000);
+  for(const std::string method : {"df_l1", "l1"})
+  {
+    INFO(method);
+    const std::string output = scratch.path(method + ".obj"), report = scratch.path(method + ".json");
+    const Run r = run_tool(quoted(input) + " " + quoted(output) + " --method " + method + " --samples 400 --report " +
+                           quoted(report) + " --threads 1", scratch);
+    INFO(r.err);
+    REQUIRE(r.status == 0);
+    const Obj_graph g = read_obj_graph(output);
+    CHECK(g.well_formed);
+    CHECK(g.vertices >= 2);
+    const auto tree = read_report(report);
+    CHECK(tree.get<std::string>("parameters.method") == method);
+    const auto& stages = tree.get_child("counts.contraction_stages");
+    REQUIRE(!stages.empty());
+    if(method == "l1") // without the guidance all samples share the support radius
+      for(const auto& entry : stages)
+        CHECK(entry.second.get<double>("min_radius") == Approx(entry.second.get<double>("max_radius")));
+  }
+}
+
+TEST_CASE("tool: bad values of the contraction options give exit status 2 and a message", "[tool][final]")
+{
+  const Scratch scratch;
+  const std::string input = scratch.write("sphere.xyz", sphere_points(500));
+  const std::string output = scratch.path("out.obj");
+  const struct
+  {
+    std::string arguments, option; // the option the message must name
+  } cases[] = {
+    {"--method bogus", "--method"},           {"--method", "--method"},
+    {"--samples 0", "--samples"},             {"--samples -5", "--samples"},
+    {"--samples 1.5", "--samples"},           {"--samples abc", "--samples"},
+    {"--repulsion 0.5", "--repulsion"},       {"--repulsion -0.01", "--repulsion"},
+    {"--repulsion x", "--repulsion"},         {"--support-radius 0", "--support-radius"},
+    {"--support-radius -1", "--support-radius"}, {"--support-radius nan", "--support-radius"},
+    {"--support-growth 0", "--support-growth"}, {"--support-growth 4.5", "--support-growth"},
+    {"--branch-sigma 0.3", "--branch-sigma"}, {"--branch-sigma 1", "--branch-sigma"},
+    {"--iterations 0", "--iterations"},       {"--iterations 10001", "--iterations"},
+    {"--iterations 2.5", "--iterations"},     {"--preview-stages", "--preview-stages"},
+    {"--stage initial --preview " + quoted(scratch.path("p.svg")) + " --preview-stages", "--preview-stages"},
+    {"--stage fin", "--stage"},
+  };
+  for(const auto& c : cases)
+  {
+    INFO(c.arguments);
+    const Run r = run_tool(quoted(input) + " " + quoted(output) + " " + c.arguments, scratch);
+    INFO(r.err);
+    CHECK(r.status == 2);
+    CHECK(r.err.find(c.option) != std::string::npos);
+    CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+    CHECK_FALSE(fs::exists(output));
+  }
+}
+
+TEST_CASE("tool: --preview-stages adds the initial skeleton as a second row", "[tool][final]")
+{
+  const Scratch scratch;
+  const std::string input = shape_input(scratch, "y_junction", 3000);
+  const std::string output = scratch.path("out.obj");
+  const auto preview = [&](const std::string& name, const std::string& arguments) {
+    const std::string svg = scratch.path(name);
+    const Run r = run_tool(quoted(input) + " " + quoted(output) + " --samples 400 --threads 1 --preview " + quoted(svg) +
+                           " " + arguments, scratch);
+    INFO(r.err);
+    REQUIRE(r.status == 0);
+    return read_text(svg);
+  };
+  const std::string both = preview("both.svg", "--preview-stages");
+  CHECK(count_of(both, "class=\"row-title\"") == 2);
+  const std::size_t final_title = both.find(">final skeleton"), initial_title = both.find(">initial skeleton");
+  CHECK(final_title != std::string::npos);
+  CHECK(initial_title != std::string::npos);
+  CHECK(final_title < initial_title); // the result first
+
+  const std::string final_only = preview("final.svg", "");
+  CHECK(count_of(final_only, "class=\"row-title\"") == 1);
+  CHECK(final_only.find(">final skeleton") != std::string::npos);
+  CHECK(final_only.find(">initial skeleton") == std::string::npos);
+
+  const std::string initial_only = preview("initial.svg", "--stage initial");
+  CHECK(count_of(initial_only, "class=\"row-title\"") == 1);
+  CHECK(initial_only.find(">initial skeleton") != std::string::npos);
+  CHECK(initial_only.find(">final skeleton") == std::string::npos);
+}
+
+TEST_CASE("tool: --stage initial still writes the initial skeleton in the same formats", "[tool][final]")
+{
+  const Scratch scratch;
+  const std::string input = shape_input(scratch, "y_junction", 3000);
+  const std::string report = scratch.path("initial.json");
+  REQUIRE(run_tool(quoted(input) + " " + quoted(scratch.path("initial.obj")) + " --stage initial --report " +
+                   quoted(report), scratch).status == 0);
+  REQUIRE(run_tool(quoted(input) + " " + quoted(scratch.path("initial.ply")) + " --stage initial", scratch).status == 0);
+  REQUIRE(run_tool(quoted(input) + " " + quoted(scratch.path("initial.polylines.txt")) + " --stage initial", scratch).status == 0);
+
+  const Obj_graph g = read_obj_graph(scratch.path("initial.obj"));
+  CHECK(g.well_formed);
+  const std::string obj = read_text(scratch.path("initial.obj"));
+  CHECK(obj.rfind("# DF_L1_skeleton: " + std::to_string(g.vertices) + " vertices, " + std::to_string(g.edges) + " edges\n", 0) == 0);
+  const std::string ply = read_text(scratch.path("initial.ply"));
+  CHECK(ply.rfind("ply\nformat ascii 1.0\ncomment written by DF_L1_skeleton\nelement vertex " + std::to_string(g.vertices) +
+                  "\nproperty double x\nproperty double y\nproperty double z\nproperty double radius\nelement edge " +
+                  std::to_string(g.edges) + "\nproperty int vertex1\nproperty int vertex2\nend_header\n", 0) == 0);
+  const std::string polylines = read_text(scratch.path("initial.polylines.txt"));
+  CHECK(!polylines.empty());
+  CHECK(std::isdigit(static_cast<unsigned char>(polylines[0])));
+
+  // The report is the one of the initial stage: no key of the contraction.
+  const std::string text = read_text(report);
+  INFO(text);
+  const auto tree = read_report(report);
+  CHECK(tree.get<std::string>("parameters.stage") == "initial");
+  CHECK(tree.get<std::size_t>("counts.skeleton_vertices") == g.vertices);
+  for(const char* key : {"parameters.method", "parameters.number_of_samples", "seconds.contraction", "seconds.skeleton",
+                         "counts.samples", "counts.contraction_stages", "counts.initial_skeleton_vertices"})
+  {
+    INFO(key);
+    CHECK_FALSE(bool(tree.get_child_optional(key)));
+  }
+
+  // It is the initial skeleton of the final stage.
+  const std::string final_report = scratch.path("final.json");
+  REQUIRE(run_tool(quoted(input) + " " + quoted(scratch.path("final.obj")) + " --samples 400 --report " +
+                   quoted(final_report), scratch).status == 0);
+  const auto final_tree = read_report(final_report);
+  CHECK(final_tree.get<std::size_t>("counts.initial_skeleton_vertices") == g.vertices);
+  CHECK(final_tree.get<std::size_t>("counts.initial_skeleton_edges") == g.edges);
+  CHECK(final_tree.get<std::size_t>("counts.skeleton_voxels") == tree.get<std::size_t>("counts.skeleton_voxels"));
+}
+
+TEST_CASE("tool: --help lists the stages and the contraction options", "[tool][final]")
+{
+  const Scratch scratch;
+  const std::string out = scratch.path("help.txt");
+  const int raw = std::system(("\"" + std::string(DF_L1_TOOL_PATH) + "\" --help > " + quoted(out)).c_str());
+  REQUIRE(WIFEXITED(raw));
+  CHECK(WEXITSTATUS(raw) == 0);
+  const std::string help = read_text(out);
+  for(const char* text : {"voxels, distance, initial or final (default: final)", "--method", "--samples", "--repulsion",
+                          "--support-radius", "--support-growth", "--branch-sigma", "--iterations", "--preview-stages"})
+  {
+    INFO(text);
+    CHECK(help.find(text) != std::string::npos);
+  }
 }

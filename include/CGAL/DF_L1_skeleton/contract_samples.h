@@ -269,10 +269,6 @@ Contracted_samples<Traits> contract_samples(const std::vector<typename Traits::P
       });
     }
     const std::size_t new_branch_points = tracer.run(directionality, centred);
-#ifdef DF_L1_DEBUG_CONTRACTION
-    { double mx = 0, mean = 0; std::size_t k = 0; for(std::size_t i = 0; i < directionality.sigma.size(); ++i) if(active[i]) { mx = (std::max)(mx, directionality.sigma[i]); mean += directionality.sigma[i]; ++k; }
-      std::fprintf(stderr, "stage %d sigma max %.3f mean %.3f new %zu\n", stage_index, mx, mean / double(k), new_branch_points); }
-#endif
     stats.branch_samples = std::size_t(std::count(s.role.begin(), s.role.end(), Sample_role::BRANCH));
     result.stages.push_back(stats);
     stages_without_branch = new_branch_points > 0 ? 0 : stages_without_branch + 1;
