@@ -166,10 +166,8 @@ public:
     if(raw_grid_)
       return;
     upsample();
-    std::vector<Point> all = kept_points();
-    all.insert(all.end(), added_points_.begin(), added_points_.end());
     raw_grid_ = std::make_unique<Voxel_grid>(DF_L1::voxelize_point_set<ConcurrencyTag>(
-      all, parameters::voxel_resolution(voxel_resolution_,
+      kept_and_added_points(), parameters::voxel_resolution(voxel_resolution_,
            parameters::initial_voxel_size(initial_voxel_size_,
            parameters::exterior_propagation_steps(exterior_propagation_steps_)))));
   }
@@ -223,8 +221,7 @@ public:
     if(contracted_)
       return;
     extract_initial_skeleton();
-    std::vector<Point> all = kept_points();
-    all.insert(all.end(), added_points_.begin(), added_points_.end());
+    const std::vector<Point> all = kept_and_added_points();
     if(!initial_support_radius_set_)
       initial_support_radius_ = DF_L1::internal::initial_support_radius(parameters::default_values(), diagonal_,
                                                                         all.size(), stage_name);
@@ -382,6 +379,14 @@ private:
       if(!sparse_outliers_[i])
         kept.push_back(points_[i]);
     return kept;
+  }
+
+  // the points the grid and the contraction are built from
+  std::vector<Point> kept_and_added_points() const
+  {
+    std::vector<Point> all = kept_points();
+    all.insert(all.end(), added_points_.begin(), added_points_.end());
+    return all;
   }
 
   std::vector<Point> points_;

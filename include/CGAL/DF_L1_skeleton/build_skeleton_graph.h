@@ -26,12 +26,6 @@ namespace CGAL {
 namespace DF_L1 {
 namespace internal {
 
-template <class Point_3>
-Vec3 as_vec3(const Point_3& p)
-{
-  return {{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())}};
-}
-
 // Reconciles the traced branches with the topology of the initial skeleton, which the
 // voxel thinning gets right (one component per part of the shape, one loop per handle):
 // the branches of a part are joined into one component, extra loops are opened, missing
@@ -48,7 +42,7 @@ public:
     s_.resize(n);
     for(std::size_t v = 0; v < n; ++v)
     {
-      s_[v] = as_vec3(initial[v].point);
+      s_[v] = to_vec3(initial[v].point);
       s_adj_.emplace_back();
       for(auto e : CGAL::make_range(boost::out_edges(v, initial)))
         s_adj_[v].push_back(boost::target(e, initial));
@@ -482,7 +476,7 @@ Skeleton_graph<Traits> build_skeleton_graph(const Contracted_samples<Traits>& sa
   for(const auto& e : samples.edges)
     for(std::size_t v : {e.first, e.second})
       if(id[v] == Curve_graph::npos)
-        id[v] = g.add_vertex(as_vec3(samples.points[v]));
+        id[v] = g.add_vertex(to_vec3(samples.points[v]));
   for(const auto& e : samples.edges)
     g.add_edge(id[e.first], id[e.second]);
 

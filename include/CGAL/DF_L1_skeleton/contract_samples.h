@@ -13,12 +13,14 @@
 #include <CGAL/DF_L1_skeleton/internal/branch_tracing.h>
 #include <CGAL/DF_L1_skeleton/internal/l1_median_iteration.h>
 #include <CGAL/DF_L1_skeleton/internal/parallel_for.h>
+#include <CGAL/DF_L1_skeleton/internal/point_range.h>
 #include <CGAL/DF_L1_skeleton/internal/sample_directionality.h>
 #include <CGAL/DF_L1_skeleton/internal/sample_selection.h>
 #include <CGAL/DF_L1_skeleton/internal/uniform_grid.h>
 #include <CGAL/DF_L1_skeleton/named_parameters.h>
 
 #include <CGAL/Named_function_parameters.h>
+#include <CGAL/property_map.h>
 #include <CGAL/tags.h>
 
 #include <algorithm>
@@ -37,12 +39,6 @@ inline double median_of(std::vector<double> v)
     return 0;
   std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
   return v[v.size() / 2];
-}
-
-template <class Point_3>
-Vec3 to_vec3(const Point_3& p)
-{
-  return {{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())}};
 }
 
 // The junctions of the initial skeleton graph: clusters of adjacent vertices of degree 3
@@ -139,7 +135,8 @@ std::vector<Junction_zone> junction_zones(const Graph& g, const Lookup& lookup)
 ///        (0.35), `initial_support_radius` (2 d_bb / cbrt N), `support_radius_growth` (0.5),
 ///        `branch_directionality` (0.9), `number_of_iterations` (CGAL's: the maximum per
 ///        stage, default 30)
-/// \throws Invalid_input if `points` is empty or a parameter is out of range
+/// \throws Invalid_input if `points` is empty or has a non-finite coordinate, or a
+///         parameter is out of range
 template <class ConcurrencyTag = CGAL::Parallel_if_available_tag, class Traits,
           class NamedParameters = parameters::Default_named_parameters>
 Contracted_samples<Traits> contract_samples(const std::vector<typename Traits::Point_3>& points,
@@ -150,21 +147,13 @@ Contracted_samples<Traits> contract_samples(const std::vector<typename Traits::P
   using namespace internal;
   static constexpr const char* stage = "contract_samples";
   typedef typename Traits::Point_3 Point_3;
-  if(points.empty())
-    throw Invalid_input(std::string(stage) + ": no points");
+  const CGAL::Identity_property_map<Point_3> identity;
+  const double diagonal = internal::diagonal(checked_bbox(points, identity, stage));
 
   Contracted_samples<Traits> result;
   result.method = skeletonization_method(np);
   const bool guided = result.method == Skeletonization_method::DISTANCE_FIELD_GUIDED;
-  std::vector<Vec3> input(points.size());
-  Vec3 lo, hi;
-  for(std::size_t i = 0; i < points.size(); ++i)
-  {
-    input[i] = to_vec3(points[i]);
-    lo = i == 0 ? input[i] : Vec3{{(std::min)(lo[0], input[i][0]), (std::min)(lo[1], input[i][1]), (std::min)(lo[2], input[i][2])}};
-    hi = i == 0 ? input[i] : Vec3{{(std::max)(hi[0], input[i][0]), (std::max)(hi[1], input[i][1]), (std::max)(hi[2], input[i][2])}};
-  }
-  const double diagonal = distance(lo, hi);
+  const std::vector<Vec3> input = to_xyz(points, identity);
   const std::size_t m = number_of_samples(np, points.size(), stage);
   const double u = repulsion_coefficient(np, stage);
   const double h0 = initial_support_radius(np, diagonal, points.size(), stage);

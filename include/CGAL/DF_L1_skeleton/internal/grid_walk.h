@@ -81,10 +81,7 @@ bool segment_stays_inside(const Grid_geometry<Traits>& grid, const std::vector<V
                           const typename Traits::Point_3& p, const typename Traits::Point_3& q)
 {
   return walk_segment(grid, p, q, [&](int i, int j, int k) {
-    if(!grid.contains(i, j, k))
-      return false;
-    const Voxel_label l = labels[grid.index(i, j, k)];
-    return l == Voxel_label::BOUNDARY || l == Voxel_label::INTERIOR;
+    return grid.contains(i, j, k) && Voxel_grid<Traits>::is_occupied(labels[grid.index(i, j, k)]);
   });
 }
 

@@ -32,6 +32,11 @@ inline Vec3 normalized(const Vec3& a)
   const double n = norm(a);
   return n > 0 ? (1 / n) * a : Vec3{{0, 0, 0}};
 }
+template <class Point_3>
+Vec3 to_vec3(const Point_3& p)
+{
+  return {{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())}};
+}
 
 // The voxels as the contraction sees them: the distance value and whether a point is in
 // the shape, looked up in double precision.
@@ -66,18 +71,12 @@ public:
     const std::size_t v = voxel(p);
     return v == npos ? 0 : values_[v] * voxel_;
   }
-  // whether p lies in a boundary or interior voxel
-  bool in_shape(const Vec3& p) const
-  {
-    const std::size_t v = voxel(p);
-    return v != npos && (labels_[v] == Voxel_label::BOUNDARY || labels_[v] == Voxel_label::INTERIOR);
-  }
   // The distance-field constraint of section 6.1: a step from p to q is allowed unless q
   // is outside the shape or in a voxel of smaller distance value than p's.
   bool allows_step(const Vec3& p, const Vec3& q) const
   {
     const std::size_t vq = voxel(q);
-    if(vq == npos || !(labels_[vq] == Voxel_label::BOUNDARY || labels_[vq] == Voxel_label::INTERIOR))
+    if(vq == npos || !Voxel_grid<Traits>::is_occupied(labels_[vq]))
       return false;
     const std::size_t vp = voxel(p);
     return vp == npos || values_[vq] >= values_[vp];
