@@ -60,6 +60,8 @@ struct Settings
   int voxel_resolution = 100;
   double initial_voxel_size = NAN;
   int exterior_propagation_steps = 1;
+  std::string denoise = "auto"; // auto, on or off
+  int denoising_neighbors = 24;
   bool upsampling = true;
   int upsampling_neighbors = 5;
   double upsampling_radius = NAN;
@@ -193,6 +195,14 @@ std::vector<df_l1_tool::Option> option_table(Settings& s, bool& help, bool& vers
      [&](const std::string& v) {
        s.exterior_propagation_steps = int(parse_integer("exterior-propagation-steps", v, 1, 27));
      }},
+    {"denoise", "MODE", "auto", "smooth the points onto local quadrics before voxelization: auto (when the estimated noise exceeds a fifth of a voxel), on or off",
+     [&](const std::string& v) {
+       if(v != "auto" && v != "on" && v != "off")
+         throw Usage_error("--denoise must be auto, on or off, got '" + v + "'");
+       s.denoise = v;
+     }},
+    {"denoising-neighbors", "K", "24", "neighbours of the local quadrics of the noise estimate and the smoothing, in [6, 256]",
+     [&](const std::string& v) { s.denoising_neighbors = int(parse_integer("denoising-neighbors", v, 6, 256)); }},
     {"no-upsampling", "", "upsampling on", "do not upsample sparse regions",
      [&](const std::string&) { s.upsampling = false; }},
     {"upsampling-neighbors", "K", "5", "k of the density k/r^3 of the sparse-region test, in [1, 64]",
@@ -331,7 +341,11 @@ int run(const Settings& s)
   const DF::Skeletonization_method method =
     s.method == "l1" ? DF::Skeletonization_method::L1_MEDIAL : DF::Skeletonization_method::DISTANCE_FIELD_GUIDED;
   // number_of_samples and number_of_iterations are CGAL's (member functions), the others ours.
+  const DF::Denoising denoising =
+    s.denoise == "on" ? DF::Denoising::ALWAYS : s.denoise == "off" ? DF::Denoising::NEVER : DF::Denoising::AUTOMATIC;
   const auto np =
+    params::denoising(denoising,
+    params::denoising_neighbors(s.denoising_neighbors,
     params::voxel_resolution(s.voxel_resolution,
     params::exterior_propagation_steps(s.exterior_propagation_steps,
     params::upsampling(s.upsampling,
@@ -342,7 +356,7 @@ int run(const Settings& s)
     params::repulsion_coefficient(s.repulsion,
     params::support_radius_growth(s.support_growth,
     params::branch_directionality(s.branch_sigma,
-    params::number_of_iterations(s.iterations).number_of_samples(std::size_t(s.samples))))))))))));
+    params::number_of_iterations(s.iterations).number_of_samples(std::size_t(s.samples))))))))))))));
   // h0 has no setter and its default is derived, so it can only be given at construction.
   const std::unique_ptr<Skeletonization> owner =
     std::isnan(s.support_radius) ? std::make_unique<Skeletonization>(points, np)
@@ -362,6 +376,7 @@ int run(const Settings& s)
   };
   // Scattered outliers go before voxelization; the voxel test catches the clusters.
   stage("outlier_points", &Skeletonization::flag_outliers);
+  stage("denoising", &Skeletonization::denoise);
   if(s.upsampling)
     stage("upsampling", &Skeletonization::upsample);
   stage("voxelization", &Skeletonization::voxelize);
@@ -429,6 +444,8 @@ int run(const Settings& s)
       .number("threads", s.threads > 0 ? s.threads : double(tbb::this_task_arena::max_concurrency()))
       .number("seed", double(s.seed))
       .number("bbox_diagonal", skeletonization.bbox_diagonal())
+      .text("denoising", s.denoise)
+      .number("denoising_neighbors", skeletonization.denoising_neighbors())
       .boolean("upsampling", skeletonization.upsampling())
       .number("upsampling_neighbors", skeletonization.upsampling_neighbors())
       .number("upsampling_radius", skeletonization.upsampling_radius())
@@ -458,6 +475,8 @@ int run(const Settings& s)
       .number("added_points", double(skeletonization.added_points().size()))
       .number("outlier_points", double(skeletonization.number_of_outliers()))
       .number("sparse_outlier_points", double(skeletonization.number_of_sparse_outliers()))
+      .number("surface_noise", skeletonization.surface_noise())
+      .boolean("denoised", skeletonization.denoised())
       .number("outlier_clusters", double(skeletonization.outlier_voxel_statistics().components_removed))
       .number("shape_components", double(skeletonization.outlier_voxel_statistics().components_kept))
       .raw("grid", "[" + std::to_string(grid.dims[0]) + ", " + std::to_string(grid.dims[1]) + ", " +

@@ -11,6 +11,7 @@
 #include <CGAL/DF_L1_skeleton/assign_points_to_skeleton.h>
 #include <CGAL/DF_L1_skeleton/build_skeleton_graph.h>
 #include <CGAL/DF_L1_skeleton/contract_samples.h>
+#include <CGAL/DF_L1_skeleton/denoise_point_set.h>
 #include <CGAL/DF_L1_skeleton/distance_field.h>
 #include <CGAL/DF_L1_skeleton/errors.h>
 #include <CGAL/DF_L1_skeleton/extract_initial_skeleton.h>
@@ -69,13 +70,14 @@ public:
   /// \tparam PointRange a model of `ConstRange`; its value type is the key type of the point map
   /// \param points the input points; normals are not needed
   /// \param np an optional sequence of named parameters among `point_map` and the
-  ///        parameters of the stages: `voxel_resolution`, `initial_voxel_size`,
+  ///        parameters of the stages: `denoising`, `denoising_neighbors`,
+  ///        `voxel_resolution`, `initial_voxel_size`,
   ///        `exterior_propagation_steps`, `upsampling`, `upsampling_neighbors`,
   ///        `upsampling_radius`, `outlier_component_size`, `thinning_coefficient`,
   ///        `spur_length_ratio`, `skeletonization_method`, `number_of_samples`,
   ///        `repulsion_coefficient`, `initial_support_radius`, `support_radius_growth`,
   ///        `branch_directionality`, `number_of_iterations` (see `voxelize_point_set()`,
-  ///        `upsample_sparse_regions()`, `remove_outlier_voxels()`,
+  ///        `denoise_point_set()`, `upsample_sparse_regions()`, `remove_outlier_voxels()`,
   ///        `extract_initial_skeleton()` and `contract_samples()` for their meaning and
   ///        defaults)
   /// \throws DF_L1::Invalid_input if the range is empty, holds a non-finite coordinate,
@@ -100,6 +102,8 @@ public:
     check_volume(DF_L1::internal::longest_side(box) / voxel_resolution_);
     initial_voxel_size_ = DF_L1::internal::initial_voxel_size(np, diagonal_, stage_name);
     exterior_propagation_steps_ = DF_L1::internal::exterior_propagation_steps(np, stage_name);
+    denoising_ = DF_L1::internal::denoising(np);
+    denoising_neighbors_ = DF_L1::internal::denoising_neighbors(np, stage_name);
     upsampling_ = choose_parameter(get_parameter(np, internal_np::df_l1_upsampling), true);
     upsampling_neighbors_ = DF_L1::internal::upsampling_neighbors(np, stage_name);
     upsampling_radius_ = DF_L1::internal::upsampling_radius(np, diagonal_, points_.size(), stage_name);
@@ -141,18 +145,42 @@ public:
       sparse_outlier_count_ += b;
   }
 
+  /// Estimates the surface noise of the kept points (`estimate_surface_noise()`) and,
+  /// as the `denoising` parameter says, smooths them (`denoise_point_set()`): by default
+  /// when the noise exceeds a fifth of the finest voxel size (measured: at most 0.09
+  /// voxel on clean, sparse, holed or uneven samples, at least 0.40 with 1 % noise). The later stages use the
+  /// smoothed positions; the input points, their indices and the outlier flags stay.
+  void denoise()
+  {
+    if(denoise_checked_)
+      return;
+    flag_outliers();
+    kept_points_.clear();
+    for(std::size_t i = 0; i < points_.size(); ++i)
+      if(!sparse_outliers_[i])
+        kept_points_.push_back(points_[i]);
+    surface_noise_ = DF_L1::estimate_surface_noise<ConcurrencyTag>(kept_points_);
+    const double finest_voxel = DF_L1::internal::longest_side(
+      CGAL::bbox_3(points_.begin(), points_.end())) / voxel_resolution_;
+    denoised_ = denoising_ == DF_L1::Denoising::ALWAYS ||
+                (denoising_ == DF_L1::Denoising::AUTOMATIC && surface_noise_ > 0.2 * finest_voxel);
+    if(denoised_)
+      kept_points_ = DF_L1::denoise_point_set<ConcurrencyTag>(
+        kept_points_, parameters::denoising_neighbors(int(denoising_neighbors_)));
+    denoise_checked_ = true;
+  }
+
   /// Adds points in the sparse regions of the kept points (`upsample_sparse_regions()`),
   /// unless upsampling is off.
   void upsample()
   {
     if(upsampled_)
       return;
-    flag_outliers();
+    denoise();
     if(upsampling_)
     {
-      const std::vector<Point> kept = kept_points();
       DF_L1::upsample_sparse_regions<ConcurrencyTag>(
-        kept, std::back_inserter(added_points_),
+        kept_points_, std::back_inserter(added_points_),
         parameters::upsampling_neighbors(upsampling_neighbors_,
         parameters::upsampling_radius(upsampling_radius_,
         parameters::voxel_resolution(voxel_resolution_))));
@@ -264,6 +292,13 @@ public:
   std::size_t number_of_outliers() { remove_outlier_voxels(); return outlier_count_; }
   /// number of input points flagged by `flag_sparse_outliers()` alone
   std::size_t number_of_sparse_outliers() { flag_outliers(); return sparse_outlier_count_; }
+  /// the estimated noise of the surface, input units (`estimate_surface_noise()`)
+  double surface_noise() { denoise(); return surface_noise_; }
+  /// whether the points were smoothed before voxelization
+  bool denoised() { denoise(); return denoised_; }
+  /// the points that are not scattered outliers, in input order, at the positions the
+  /// later stages use (smoothed when `denoised()`)
+  const std::vector<Point>& kept_points() { denoise(); return kept_points_; }
   /// the points added in sparse regions
   const std::vector<Point>& added_points() { upsample(); return added_points_; }
   /// the voxels after outlier removal
@@ -287,6 +322,8 @@ public:
   int voxel_resolution() const { return voxel_resolution_; }              ///< V
   double initial_voxel_size() const { return initial_voxel_size_; }       ///< s0 before rounding
   int exterior_propagation_steps() const { return exterior_propagation_steps_; } ///< exterior steps per level
+  DF_L1::Denoising denoising() const { return denoising_; } ///< when the points are smoothed
+  unsigned int denoising_neighbors() const { return denoising_neighbors_; } ///< k of the local quadrics
   bool upsampling() const { return upsampling_; } ///< whether sparse regions are upsampled
   int upsampling_neighbors() const { return upsampling_neighbors_; } ///< k of the density test
   double upsampling_radius() const { return upsampling_radius_; } ///< r of the density test
@@ -371,20 +408,10 @@ private:
                                  " points lie on a plane (RMS distance to it under a quarter of a voxel); they enclose no volume");
   }
 
-  std::vector<Point> kept_points() const
-  {
-    std::vector<Point> kept;
-    kept.reserve(points_.size());
-    for(std::size_t i = 0; i < points_.size(); ++i)
-      if(!sparse_outliers_[i])
-        kept.push_back(points_[i]);
-    return kept;
-  }
-
   // the points the grid and the contraction are built from
   std::vector<Point> kept_and_added_points() const
   {
-    std::vector<Point> all = kept_points();
+    std::vector<Point> all = kept_points_;
     all.insert(all.end(), added_points_.begin(), added_points_.end());
     return all;
   }
@@ -394,6 +421,8 @@ private:
   int voxel_resolution_ = 100;
   double initial_voxel_size_ = 0;
   int exterior_propagation_steps_ = 1;
+  DF_L1::Denoising denoising_ = DF_L1::Denoising::AUTOMATIC;
+  unsigned int denoising_neighbors_ = 24;
   bool upsampling_ = true;
   int upsampling_neighbors_ = 5;
   double upsampling_radius_ = 0;
@@ -412,6 +441,9 @@ private:
 
   std::vector<bool> sparse_outliers_, outliers_;
   std::size_t sparse_outlier_count_ = 0, outlier_count_ = 0;
+  bool denoise_checked_ = false, denoised_ = false;
+  double surface_noise_ = 0;
+  std::vector<Point> kept_points_; // the points that are not scattered outliers, smoothed when denoised
   bool upsampled_ = false;
   std::vector<Point> added_points_;
   std::unique_ptr<Voxel_grid> raw_grid_, grid_;

@@ -9,7 +9,9 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -49,9 +51,9 @@ bool same_graph(const Graph& a, const Graph& b)
 
 TEST_CASE("final skeleton: clean shapes have the designed topology, centred and inside", "[final]")
 {
-  for(const std::string shape : {"capsule", "y_junction", "star", "torus", "figure_eight", "theta", "branching_tree",
-                                 "helix", "dumbbell", "disjoint_pair"})
+  for(const auto& entry : all_shapes())
   {
+    const std::string& shape = entry.first;
     std::string line;
     const Skeleton_quality q = quality_of(shape, Variant::clean, DF::Skeletonization_method::DISTANCE_FIELD_GUIDED, line);
     INFO(line);
@@ -63,7 +65,8 @@ TEST_CASE("final skeleton: clean shapes have the designed topology, centred and 
 }
 
 // The six shapes and six variants of the issue. Every case must stay centred and inside;
-// the topology passes are a floor that the refinement work raises to all 36.
+// the topology passes are a floor (measured: 35 of 36, star with noise keeps a second
+// junction) that the refinement work raises to all 36.
 TEST_CASE("final skeleton: 6 shapes x 6 variants stay centred and inside", "[final]")
 {
   int passes = 0, cases = 0;
@@ -75,12 +78,12 @@ TEST_CASE("final skeleton: 6 shapes x 6 variants stay centred and inside", "[fin
       INFO(line);
       CHECK(q.topology.components == shape_by_name(shape).expected_topology().components);
       CHECK(q.outside_fraction <= 0.01);
-      CHECK(q.mean_axis_ratio <= (variant == Variant::noise ? 0.35 : 0.25));
+      CHECK(q.mean_axis_ratio <= 0.25);
       passes += topology_matches(shape_by_name(shape).expected_topology(), q.topology, variant != Variant::clean);
       ++cases;
     }
   INFO(passes << " of " << cases << " cases with the designed topology");
-  CHECK(passes >= 23);
+  CHECK(passes >= 35);
 }
 
 TEST_CASE("final skeleton: the free function, the class run at once and stage by stage agree", "[final]")
@@ -125,6 +128,50 @@ TEST_CASE("final skeleton: 1 and 2 threads give the same skeleton", "[final]")
   Graph sequential;
   CGAL::extract_df_l1_skeleton<CGAL::Sequential_tag>(sample.points, sequential);
   CHECK(same_graph(one, sequential));
+}
+
+TEST_CASE("final skeleton: a scaled cloud gives the scaled skeleton", "[final][scale]")
+{
+  for(Variant variant : {Variant::clean, Variant::noise})
+  {
+    const Sample sample = sample_of("y_junction", variant);
+    std::vector<Point_3> scaled;
+    for(const Point_3& p : sample.points)
+      scaled.emplace_back(1000 * p.x(), 1000 * p.y(), 1000 * p.z());
+    CGAL::DF_L1_skeletonization<Kernel> unit(sample.points), big(scaled);
+    const Graph& a = unit.skeleton();
+    const Graph& b = big.skeleton();
+    CHECK(big.denoised() == unit.denoised());
+    const DF::Skeleton_statistics sa = DF::skeleton_statistics(a), sb = DF::skeleton_statistics(b);
+    CHECK(sa.components == sb.components);
+    CHECK(sa.cycles == sb.cycles);
+    CHECK(sa.end_points == sb.end_points);
+    CHECK(sa.junctions == sb.junctions);
+    // every vertex of one lies within a voxel of the other, scaled (a point on a voxel
+    // face may round to either side once scaled, so vertices need not match one to one)
+    const double voxel = CGAL::to_double(unit.distance_field().voxel_size);
+    const auto farthest = [](const Graph& from, double from_scale, const Graph& to, double to_scale) {
+      double worst = 0;
+      for(std::size_t v = 0; v < boost::num_vertices(from); ++v)
+      {
+        double best = std::numeric_limits<double>::infinity();
+        for(std::size_t w = 0; w < boost::num_vertices(to); ++w)
+        {
+          const Point_3& p = from[v].point;
+          const Point_3& q = to[w].point;
+          best = std::min(best, std::sqrt(CGAL::square(p.x() / from_scale - q.x() / to_scale) +
+                                          CGAL::square(p.y() / from_scale - q.y() / to_scale) +
+                                          CGAL::square(p.z() / from_scale - q.z() / to_scale)));
+        }
+        worst = std::max(worst, best);
+      }
+      return worst;
+    };
+    INFO(to_string(variant) << ": voxel " << voxel);
+    CHECK(farthest(a, 1, b, 1000) <= voxel);
+    CHECK(farthest(b, 1000, a, 1) <= voxel);
+    CHECK(CGAL::to_double(b[0].radius) > 0);
+  }
 }
 
 TEST_CASE("contraction: the guidance pulls the samples onto the initial skeleton and keeps them inside", "[final]")

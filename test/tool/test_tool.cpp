@@ -446,6 +446,41 @@ TEST_CASE("tool: --method l1 runs the plain L1-medial contraction", "[tool][fina
   }
 }
 
+TEST_CASE("tool: --denoise smooths noisy clouds by default and as told", "[tool][denoising]")
+{
+  const Scratch scratch;
+  const std::string noisy = scratch.path("noisy.xyz"), clean = shape_input(scratch, "capsule", 4000);
+  DF_L1_test::write_xyz(noisy, DF_L1_test::make_sample(DF_L1_test::shape_by_name("capsule"), DF_L1_test::Variant::noise, 4000, 1).points);
+  const struct
+  {
+    std::string input, mode;
+    bool denoised;
+  } cases[] = {{noisy, "", true}, {clean, "", false}, {noisy, "off", false}, {clean, "on", true}, {clean, "auto", false}};
+  for(const auto& c : cases)
+  {
+    INFO(c.input << " --denoise " << c.mode);
+    const std::string report = scratch.path("r.json");
+    const Run r = run_tool(quoted(c.input) + " " + quoted(scratch.path("s.obj")) + " --stage initial --report " + quoted(report) +
+                           (c.mode.empty() ? "" : " --denoise " + c.mode) + " --denoising-neighbors 20", scratch);
+    INFO(r.err);
+    REQUIRE(r.status == 0);
+    const auto tree = read_report(report);
+    CHECK(tree.get<std::string>("parameters.denoising") == (c.mode.empty() ? "auto" : c.mode));
+    CHECK(tree.get<int>("parameters.denoising_neighbors") == 20);
+    CHECK(tree.get<bool>("counts.denoised") == c.denoised);
+    CHECK(tree.get<double>("counts.surface_noise") >= 0);
+    CHECK(tree.get<double>("seconds.denoising") >= 0);
+  }
+  for(const std::string bad : {"--denoise yes", "--denoise", "--denoising-neighbors 5", "--denoising-neighbors 257"})
+  {
+    INFO(bad);
+    const Run r = run_tool(quoted(clean) + " " + quoted(scratch.path("bad.obj")) + " " + bad, scratch);
+    CHECK(r.status == 2);
+    CHECK(r.err.find(bad.substr(0, bad.find(' '))) != std::string::npos);
+    CHECK_FALSE(fs::exists(scratch.path("bad.obj")));
+  }
+}
+
 TEST_CASE("tool: bad values of the contraction options give exit status 2 and a message", "[tool][final]")
 {
   const Scratch scratch;
@@ -565,7 +600,8 @@ TEST_CASE("tool: --help lists the stages and the contraction options", "[tool][f
   CHECK(WEXITSTATUS(raw) == 0);
   const std::string help = read_text(out);
   for(const char* text : {"voxels, distance, initial or final (default: final)", "--method", "--samples", "--repulsion",
-                          "--support-radius", "--support-growth", "--branch-sigma", "--iterations", "--preview-stages"})
+                          "--support-radius", "--support-growth", "--branch-sigma", "--iterations", "--preview-stages",
+                          "--denoise", "--denoising-neighbors"})
   {
     INFO(text);
     CHECK(help.find(text) != std::string::npos);

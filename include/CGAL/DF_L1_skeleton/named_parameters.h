@@ -43,6 +43,8 @@ enum df_l1_repulsion_t { df_l1_repulsion };
 enum df_l1_support_radius_t { df_l1_support_radius };
 enum df_l1_support_radius_growth_t { df_l1_support_radius_growth };
 enum df_l1_branch_directionality_t { df_l1_branch_directionality };
+enum df_l1_denoising_t { df_l1_denoising };
+enum df_l1_denoising_neighbors_t { df_l1_denoising_neighbors };
 } // namespace internal_np
 
 namespace parameters {
@@ -108,6 +110,14 @@ CGAL_DF_L1_ADD_NAMED_PARAMETER(df_l1_support_radius_growth, support_radius_growt
 /// \ingroup PkgDFL1SkeletonNamedParameters
 /// The directionality sigma above which a sample may become a branch point (default 0.9).
 CGAL_DF_L1_ADD_NAMED_PARAMETER(df_l1_branch_directionality, branch_directionality)
+/// \ingroup PkgDFL1SkeletonNamedParameters
+/// When the points are smoothed before voxelization, a `CGAL::DF_L1::Denoising`
+/// (default `AUTOMATIC`: when the estimated surface noise exceeds a fifth of a voxel).
+CGAL_DF_L1_ADD_NAMED_PARAMETER(df_l1_denoising, denoising)
+/// \ingroup PkgDFL1SkeletonNamedParameters
+/// k, the number of nearest neighbours to which the local quadrics of the smoothing are
+/// fitted (default 24).
+CGAL_DF_L1_ADD_NAMED_PARAMETER(df_l1_denoising_neighbors, denoising_neighbors)
 
 #undef CGAL_DF_L1_ADD_NAMED_PARAMETER
 
@@ -125,6 +135,18 @@ enum class Skeletonization_method
   /// the plain L1-medial skeleton (Huang et al. 2013): the same engine with the guidance
   /// off and a global support radius growing by stages
   L1_MEDIAL
+};
+
+/// \ingroup PkgDFL1SkeletonRef
+/// When the points are smoothed before voxelization (named parameter `denoising`).
+enum class Denoising
+{
+  /// when `estimate_surface_noise()` exceeds a fifth of the finest voxel size
+  AUTOMATIC,
+  /// always
+  ALWAYS,
+  /// never
+  NEVER
 };
 
 namespace internal {
@@ -233,6 +255,21 @@ Skeletonization_method skeletonization_method(const NamedParameters& np)
 {
   return parameters::choose_parameter(parameters::get_parameter(np, internal_np::df_l1_method),
                                       Skeletonization_method::DISTANCE_FIELD_GUIDED);
+}
+
+template <class NamedParameters>
+Denoising denoising(const NamedParameters& np)
+{
+  return parameters::choose_parameter(parameters::get_parameter(np, internal_np::df_l1_denoising), Denoising::AUTOMATIC);
+}
+
+template <class NamedParameters>
+unsigned int denoising_neighbors(const NamedParameters& np, const char* stage)
+{
+  const int k = parameters::choose_parameter(parameters::get_parameter(np, internal_np::df_l1_denoising_neighbors), 24);
+  if(k < 6 || k > 256)
+    throw Invalid_input(std::string(stage) + ": denoising_neighbors must be in [6, 256], got " + std::to_string(k));
+  return unsigned(k);
 }
 
 // M, default 1500 (the paper's timings) but never more than the points.

@@ -8,9 +8,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
-#include <functional>
-#include <limits>
-#include <queue>
 #include <utility>
 #include <vector>
 
@@ -58,114 +55,6 @@ struct Curve_graph
   }
   std::size_t degree(std::size_t v) const { return adj[v].size(); }
   double length(std::size_t a, std::size_t b) const { return distance(x[a], x[b]); }
-
-  // component label of each live vertex (npos for removed ones), and their number
-  std::size_t components(std::vector<std::size_t>& label) const
-  {
-    label.assign(x.size(), npos);
-    std::size_t count = 0;
-    for(std::size_t s = 0; s < x.size(); ++s)
-    {
-      if(!alive[s] || label[s] != npos)
-        continue;
-      std::vector<std::size_t> stack{s};
-      label[s] = count;
-      while(!stack.empty())
-      {
-        const std::size_t v = stack.back();
-        stack.pop_back();
-        for(std::size_t w : adj[v])
-          if(label[w] == npos)
-          {
-            label[w] = count;
-            stack.push_back(w);
-          }
-      }
-      ++count;
-    }
-    return count;
-  }
-
-  // first Betti number of each component: E - V + 1
-  std::vector<long> cycles_per_component(const std::vector<std::size_t>& label, std::size_t count) const
-  {
-    std::vector<long> vertices(count, 0), twice_edges(count, 0), c(count);
-    for(std::size_t v = 0; v < x.size(); ++v)
-      if(alive[v])
-      {
-        ++vertices[label[v]];
-        twice_edges[label[v]] += long(adj[v].size());
-      }
-    for(std::size_t k = 0; k < count; ++k)
-      c[k] = twice_edges[k] / 2 - vertices[k] + 1;
-    return c;
-  }
-
-  // The shortest path from a to b that does not use the edge ab (empty when that edge is
-  // a bridge of the graph), and its length.
-  std::vector<std::size_t> detour(std::size_t a, std::size_t b, double& path_length) const
-  {
-    std::vector<double> dist(x.size(), std::numeric_limits<double>::infinity());
-    std::vector<std::size_t> from(x.size(), npos);
-    typedef std::pair<double, std::size_t> Item;
-    std::priority_queue<Item, std::vector<Item>, std::greater<Item>> queue;
-    dist[a] = 0;
-    queue.push({0, a});
-    path_length = std::numeric_limits<double>::infinity();
-    while(!queue.empty())
-    {
-      const Item top = queue.top();
-      queue.pop();
-      if(top.first > dist[top.second])
-        continue;
-      if(top.second == b)
-        break;
-      for(std::size_t w : adj[top.second])
-      {
-        if(top.second == a && w == b)
-          continue;
-        const double d = top.first + length(top.second, w);
-        if(d < dist[w])
-        {
-          dist[w] = d;
-          from[w] = top.second;
-          queue.push({d, w});
-        }
-      }
-    }
-    std::vector<std::size_t> path;
-    if(from[b] == npos)
-      return path;
-    path_length = dist[b];
-    for(std::size_t v = b; v != a; v = from[v])
-      path.push_back(v);
-    path.push_back(a);
-    std::reverse(path.begin(), path.end());
-    return path;
-  }
-
-  // The shortest cycle among the vertices with component label c, as a closed vertex
-  // sequence (first vertex not repeated); empty when the component is a tree.
-  std::vector<std::size_t> shortest_cycle(const std::vector<std::size_t>& label, std::size_t c) const
-  {
-    std::vector<std::size_t> best;
-    double best_length = std::numeric_limits<double>::infinity();
-    for(std::size_t u = 0; u < x.size(); ++u)
-      if(alive[u] && label[u] == c)
-        for(std::size_t w : adj[u])
-        {
-          if(w < u)
-            continue;
-          double len = 0;
-          std::vector<std::size_t> path = detour(u, w, len);
-          if(!path.empty() && len + length(u, w) < best_length)
-          {
-            best_length = len + length(u, w);
-            best = std::move(path);
-          }
-        }
-    return best;
-  }
 
   // Removes the terminal chains (from an end point to the first vertex of degree 3 or
   // more) shorter than `too_short(junction, tip)`, repeatedly, never removing a whole
