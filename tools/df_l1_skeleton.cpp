@@ -75,6 +75,7 @@ struct Settings
   double support_growth = 0.5;
   double branch_sigma = 0.9;
   int iterations = 30;
+  int contraction_stages = 0; // 0: the method's default
 };
 
 double peak_memory_mib()
@@ -263,6 +264,8 @@ std::vector<df_l1_tool::Option> option_table(Settings& s, bool& help, bool& vers
      }},
     {"iterations", "N", "30", "maximum iterations per support-radius stage of the contraction, in [1, 10000]",
      [&](const std::string& v) { s.iterations = int(parse_integer("iterations", v, 1, 10000)); }},
+    {"contraction-stages", "N", "64", "maximum support-radius stages of the contraction, in [1, 64]",
+     [&](const std::string& v) { s.contraction_stages = int(parse_integer("contraction-stages", v, 1, 64)); }},
     {"help", "", "", "show this help", [&](const std::string&) { help = true; }},
     {"version", "", "", "show the version", [&](const std::string&) { version = true; }},
   };
@@ -357,10 +360,15 @@ int run(const Settings& s)
     params::support_radius_growth(s.support_growth,
     params::branch_directionality(s.branch_sigma,
     params::number_of_iterations(s.iterations).number_of_samples(std::size_t(s.samples))))))))))))));
-  // h0 has no setter and its default is derived, so it can only be given at construction.
+  // h0 and the number of stages have no setter and their defaults are derived (from the
+  // points, from the method), so they can only be given at construction.
+  const auto make = [&](const auto& with_stages) {
+    return std::isnan(s.support_radius)
+             ? std::make_unique<Skeletonization>(points, with_stages)
+             : std::make_unique<Skeletonization>(points, params::initial_support_radius(s.support_radius, with_stages));
+  };
   const std::unique_ptr<Skeletonization> owner =
-    std::isnan(s.support_radius) ? std::make_unique<Skeletonization>(points, np)
-                                 : std::make_unique<Skeletonization>(points, params::initial_support_radius(s.support_radius, np));
+    s.contraction_stages > 0 ? make(params::contraction_stages(s.contraction_stages, np)) : make(np);
   Skeletonization& skeletonization = *owner;
   if(!std::isnan(s.initial_voxel_size))
     skeletonization.set_initial_voxel_size(s.initial_voxel_size);
@@ -469,7 +477,8 @@ int run(const Settings& s)
         .number("initial_support_radius", skeletonization.initial_support_radius())
         .number("support_radius_growth", skeletonization.support_radius_growth())
         .number("branch_directionality", skeletonization.branch_directionality())
-        .number("number_of_iterations", skeletonization.number_of_iterations());
+        .number("number_of_iterations", skeletonization.number_of_iterations())
+        .number("contraction_stages", skeletonization.contraction_stages());
     Json_object counts;
     counts.number("input_points", double(points.size()))
       .number("added_points", double(skeletonization.added_points().size()))

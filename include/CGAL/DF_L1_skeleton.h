@@ -76,7 +76,7 @@ public:
   ///        `upsampling_radius`, `outlier_component_size`, `thinning_coefficient`,
   ///        `spur_length_ratio`, `skeletonization_method`, `number_of_samples`,
   ///        `repulsion_coefficient`, `initial_support_radius`, `support_radius_growth`,
-  ///        `branch_directionality`, `number_of_iterations` (see `voxelize_point_set()`,
+  ///        `branch_directionality`, `number_of_iterations`, `contraction_stages` (see `voxelize_point_set()`,
   ///        `denoise_point_set()`, `upsample_sparse_regions()`, `remove_outlier_voxels()`,
   ///        `extract_initial_skeleton()` and `contract_samples()` for their meaning and
   ///        defaults)
@@ -127,6 +127,7 @@ public:
     support_radius_growth_ = DF_L1::internal::support_radius_growth(np, stage_name);
     branch_directionality_ = DF_L1::internal::branch_directionality(np, stage_name);
     iterations_per_stage_ = DF_L1::internal::iterations_per_stage(np, stage_name);
+    contraction_stages_ = DF_L1::internal::contraction_stages(np, stage_name);
   }
 
   /// \name Stages
@@ -260,7 +261,8 @@ public:
       parameters::initial_support_radius(initial_support_radius_,
       parameters::support_radius_growth(support_radius_growth_,
       parameters::branch_directionality(branch_directionality_,
-      parameters::number_of_iterations(iterations_per_stage_).number_of_samples(number_of_samples_))))))));
+      parameters::contraction_stages(contraction_stages_,
+      parameters::number_of_iterations(iterations_per_stage_).number_of_samples(number_of_samples_)))))))));
   }
 
   /// Builds the final skeleton from the contracted samples (`build_skeleton_graph()`)
@@ -341,6 +343,7 @@ public:
   double support_radius_growth() const { return support_radius_growth_; } ///< growth ratio of h between stages
   double branch_directionality() const { return branch_directionality_; } ///< sigma threshold of branch points
   int number_of_iterations() const { return iterations_per_stage_; } ///< maximum iterations per stage
+  int contraction_stages() const { return contraction_stages_; } ///< maximum support-radius stages
   /// @}
 
   /// \name Setting derived parameters
@@ -438,6 +441,7 @@ private:
   double support_radius_growth_ = 0.5;
   double branch_directionality_ = 0.9;
   int iterations_per_stage_ = 30;
+  int contraction_stages_ = 64;
 
   std::vector<bool> sparse_outliers_, outliers_;
   std::size_t sparse_outlier_count_ = 0, outlier_count_ = 0;

@@ -227,6 +227,16 @@ TEST_CASE("contraction: stages, iterations and support radii are recorded", "[fi
   }
   CHECK(c.iterations.size() == std::size_t(iterations) + 1);
   CHECK(c.stages.front().min_radius == Approx(s.initial_support_radius()));
+  CHECK(c.stages.size() >= 2);
+  CHECK(s.contraction_stages() == 64);
+
+  // contraction_stages caps the schedule; one stage still gives the designed skeleton
+  CGAL::DF_L1_skeletonization<Kernel> one(sample.points, CGAL::parameters::contraction_stages(1));
+  CHECK(one.contracted_samples().stages.size() == 1);
+  CHECK(one.contraction_stages() == 1);
+  const DF::Skeleton_statistics st = DF::skeleton_statistics(one.skeleton());
+  CHECK(st.cycles == 1);
+  CHECK(st.components == 1);
   CHECK(s.initial_support_radius() == Approx(2 * s.bbox_diagonal() / std::cbrt(double(sample.points.size()))).epsilon(0.05));
 }
 
@@ -241,6 +251,8 @@ TEST_CASE("contraction: bad parameters are refused", "[final]")
   CHECK_THROWS_AS(CGAL::DF_L1_skeletonization<Kernel>(sample.points, params::branch_directionality(1.0)), DF::Invalid_input);
   CHECK_THROWS_AS(CGAL::DF_L1_skeletonization<Kernel>(sample.points, params::number_of_samples(0)), DF::Invalid_input);
   CHECK_THROWS_AS(CGAL::DF_L1_skeletonization<Kernel>(sample.points, params::number_of_iterations(0)), DF::Invalid_input);
+  CHECK_THROWS_AS(CGAL::DF_L1_skeletonization<Kernel>(sample.points, params::contraction_stages(0)), DF::Invalid_input);
+  CHECK_THROWS_AS(CGAL::DF_L1_skeletonization<Kernel>(sample.points, params::contraction_stages(65)), DF::Invalid_input);
 }
 
 TEST_CASE("plain L1-medial baseline: runs the same engine without guidance", "[final]")

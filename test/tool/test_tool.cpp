@@ -346,7 +346,7 @@ TEST_CASE("tool: the report of the final stage states the contraction", "[tool][
   const std::string output = scratch.path("skeleton.ply"), report = scratch.path("r.json");
   const Run r = run_tool(quoted(input) + " " + quoted(output) + " --report " + quoted(report) +
                          " --samples 400 --repulsion 0.3 --support-radius " + h0_text.str() +
-                         " --support-growth 0.75 --branch-sigma 0.85 --iterations 12 --threads 1", scratch);
+                         " --support-growth 0.75 --branch-sigma 0.85 --iterations 12 --contraction-stages 3 --threads 1", scratch);
   INFO(r.err);
   REQUIRE(r.status == 0);
   const std::string text = read_text(report);
@@ -390,6 +390,8 @@ TEST_CASE("tool: the report of the final stage states the contraction", "[tool][
   CHECK(tree.get<double>("parameters.support_radius_growth") == Approx(0.75));
   CHECK(tree.get<double>("parameters.branch_directionality") == Approx(0.85));
   CHECK(tree.get<int>("parameters.number_of_iterations") == 12);
+  CHECK(tree.get<int>("parameters.contraction_stages") == 3);
+  CHECK(tree.get_child("counts.contraction_stages").size() <= 3);
 
   const std::size_t samples = tree.get<std::size_t>("counts.samples");
   CHECK(samples > 0);
@@ -500,6 +502,7 @@ TEST_CASE("tool: bad values of the contraction options give exit status 2 and a 
     {"--branch-sigma 0.3", "--branch-sigma"}, {"--branch-sigma 1", "--branch-sigma"},
     {"--iterations 0", "--iterations"},       {"--iterations 10001", "--iterations"},
     {"--iterations 2.5", "--iterations"},     {"--preview-stages", "--preview-stages"},
+    {"--contraction-stages 0", "--contraction-stages"}, {"--contraction-stages 65", "--contraction-stages"},
     {"--stage initial --preview " + quoted(scratch.path("p.svg")) + " --preview-stages", "--preview-stages"},
     {"--stage fin", "--stage"},
   };
@@ -601,7 +604,7 @@ TEST_CASE("tool: --help lists the stages and the contraction options", "[tool][f
   const std::string help = read_text(out);
   for(const char* text : {"voxels, distance, initial or final (default: final)", "--method", "--samples", "--repulsion",
                           "--support-radius", "--support-growth", "--branch-sigma", "--iterations", "--preview-stages",
-                          "--denoise", "--denoising-neighbors"})
+                          "--denoise", "--denoising-neighbors", "--contraction-stages"})
   {
     INFO(text);
     CHECK(help.find(text) != std::string::npos);

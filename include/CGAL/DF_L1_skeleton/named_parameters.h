@@ -43,6 +43,7 @@ enum df_l1_repulsion_t { df_l1_repulsion };
 enum df_l1_support_radius_t { df_l1_support_radius };
 enum df_l1_support_radius_growth_t { df_l1_support_radius_growth };
 enum df_l1_branch_directionality_t { df_l1_branch_directionality };
+enum df_l1_contraction_stages_t { df_l1_contraction_stages };
 enum df_l1_denoising_t { df_l1_denoising };
 enum df_l1_denoising_neighbors_t { df_l1_denoising_neighbors };
 } // namespace internal_np
@@ -110,6 +111,10 @@ CGAL_DF_L1_ADD_NAMED_PARAMETER(df_l1_support_radius_growth, support_radius_growt
 /// \ingroup PkgDFL1SkeletonNamedParameters
 /// The directionality sigma above which a sample may become a branch point (default 0.9).
 CGAL_DF_L1_ADD_NAMED_PARAMETER(df_l1_branch_directionality, branch_directionality)
+/// \ingroup PkgDFL1SkeletonNamedParameters
+/// The maximum number of support-radius stages of the contraction, in [1, 64] (default
+/// 64: the contraction runs until its own stopping rule).
+CGAL_DF_L1_ADD_NAMED_PARAMETER(df_l1_contraction_stages, contraction_stages)
 /// \ingroup PkgDFL1SkeletonNamedParameters
 /// When the points are smoothed before voxelization, a `CGAL::DF_L1::Denoising`
 /// (default `AUTOMATIC`: when the estimated surface noise exceeds a fifth of a voxel).
@@ -325,6 +330,15 @@ double branch_directionality(const NamedParameters& np, const char* stage)
   if(!(s > 1.0 / 3 && s < 1))
     throw Invalid_input(std::string(stage) + ": branch_directionality must be in (1/3, 1)");
   return s;
+}
+
+template <class NamedParameters>
+int contraction_stages(const NamedParameters& np, const char* stage)
+{
+  const int n = parameters::choose_parameter(parameters::get_parameter(np, internal_np::df_l1_contraction_stages), 64);
+  if(n < 1 || n > 64)
+    throw Invalid_input(std::string(stage) + ": contraction_stages must be in [1, 64]");
+  return n;
 }
 
 // Maximum number of iterations of one support-radius stage (CGAL's number_of_iterations).
