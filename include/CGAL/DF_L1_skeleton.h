@@ -251,14 +251,11 @@ public:
       return;
     extract_initial_skeleton();
     const std::vector<Point> all = kept_and_added_points();
-    if(!initial_support_radius_set_)
-      initial_support_radius_ = DF_L1::internal::initial_support_radius(parameters::default_values(), diagonal_,
-                                                                        all.size(), stage_name);
     contracted_ = std::make_unique<Contracted_samples>(DF_L1::contract_samples<ConcurrencyTag>(
       all, *field_, *initial_,
       parameters::skeletonization_method(method_,
       parameters::repulsion_coefficient(repulsion_coefficient_,
-      parameters::initial_support_radius(initial_support_radius_,
+      parameters::initial_support_radius(resolved_initial_support_radius(),
       parameters::support_radius_growth(support_radius_growth_,
       parameters::branch_directionality(branch_directionality_,
       parameters::contraction_stages(contraction_stages_,
@@ -339,7 +336,7 @@ public:
   double repulsion_coefficient() const { return repulsion_coefficient_; } ///< u of Eq. 8
   /// h0, the initial support radius (input units; derived from the kept and added points
   /// once they are known)
-  double initial_support_radius() { if(!initial_support_radius_set_) contract(); return initial_support_radius_; }
+  double initial_support_radius() { upsample(); return resolved_initial_support_radius(); }
   double support_radius_growth() const { return support_radius_growth_; } ///< growth ratio of h between stages
   double branch_directionality() const { return branch_directionality_; } ///< sigma threshold of branch points
   int number_of_iterations() const { return iterations_per_stage_; } ///< maximum iterations per stage
@@ -363,6 +360,14 @@ public:
     upsampled_ = false;
     added_points_.clear();
     discard_from_voxelization();
+  }
+  /// sets h0, the initial support radius of the contraction (input units)
+  void set_initial_support_radius(double h)
+  {
+    initial_support_radius_ = DF_L1::internal::check_initial_support_radius(h, stage_name);
+    initial_support_radius_set_ = true;
+    contracted_.reset();
+    skeleton_.reset();
   }
   /// sets the largest extent of a removable outlier cluster, in voxels
   void set_outlier_component_size(int voxels)
@@ -409,6 +414,15 @@ private:
     if(thickness < 0.25 * voxel_size)
       throw DF_L1::Invalid_input("no skeleton: the " + std::to_string(points_.size()) +
                                  " points lie on a plane (RMS distance to it under a quarter of a voxel); they enclose no volume");
+  }
+
+  // h0 as set, or derived from the number of kept and added points (once upsampled)
+  double resolved_initial_support_radius() const
+  {
+    if(initial_support_radius_set_)
+      return initial_support_radius_;
+    return DF_L1::internal::initial_support_radius(parameters::default_values(), diagonal_,
+                                                   kept_points_.size() + added_points_.size(), stage_name);
   }
 
   // the points the grid and the contraction are built from

@@ -238,6 +238,16 @@ TEST_CASE("contraction: stages, iterations and support radii are recorded", "[fi
   CHECK(st.cycles == 1);
   CHECK(st.components == 1);
   CHECK(s.initial_support_radius() == Approx(2 * s.bbox_diagonal() / std::cbrt(double(sample.points.size()))).epsilon(0.05));
+
+  // h0 can be set after construction: the contraction reruns with it
+  const double h0 = 0.8 * s.initial_support_radius();
+  s.set_initial_support_radius(h0);
+  CHECK(s.initial_support_radius() == h0);
+  CHECK(s.contracted_samples().stages.front().min_radius == Approx(h0));
+  CHECK(s.contracted_samples().initial_support_radius == h0);
+  CHECK_THROWS_AS(s.set_initial_support_radius(0.0), DF::Invalid_input);
+  CHECK_THROWS_AS(s.set_initial_support_radius(NAN), DF::Invalid_input);
+  CHECK(s.initial_support_radius() == h0); // a refused value changes nothing
 }
 
 TEST_CASE("contraction: bad parameters are refused", "[final]")
