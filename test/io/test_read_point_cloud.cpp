@@ -12,7 +12,6 @@
 
 #include <algorithm>
 #include <atomic>
-#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -842,7 +841,7 @@ TEST_CASE("read_point_cloud: bad paths and extensions", "[io][read][errors]")
   require_read_error(dir.write("ply_as.off", "ply\nformat ascii 1.0\n"), {"line 1", "OFF"});
 }
 
-TEST_CASE("read_point_cloud: a large OFF loads quickly", "[io][read][off]")
+TEST_CASE("read_point_cloud: a large OFF loads whole", "[io][read][off]")
 {
   Temp_dir dir;
   std::string content = "OFF\n110000 0 0\n";
@@ -855,13 +854,10 @@ TEST_CASE("read_point_cloud: a large OFF loads quickly", "[io][read][off]")
     content += line;
   }
   const std::string path = dir.write("big.off", content);
-  const auto t0 = std::chrono::steady_clock::now();
   const Cloud pc = CGAL::DF_L1::read_point_cloud<K>(path);
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  // Speed is measured in benchmark/, never asserted here.
   REQUIRE(pc.points.size() == 110000);
-  // Typically ~10 ms; the bound only catches pathological slowness on loaded machines.
-  WARN("110k-point OFF read in " << seconds << " s");
-  CHECK(seconds < 1.0);
+  CHECK(pc.points.back() != pc.points.front());
 }
 
 TEST_CASE("read_point_cloud: the shared real data sets load", "[io][read][data]")

@@ -22,7 +22,8 @@ struct Skeleton_vertex
 {
   /// position of the vertex
   typename Traits::Point_3 point;
-  /// local radius of the shape around the vertex (distance-field value, input units)
+  /// local radius of the shape around the vertex (distance-field value, input units; at
+  /// least half a voxel in the final skeleton)
   typename Traits::FT radius = 0;
   /// indices, in the input point range, of the input points this vertex stands for
   std::vector<std::size_t> points;

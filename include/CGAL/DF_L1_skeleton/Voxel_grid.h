@@ -6,6 +6,8 @@
 /// \file Voxel_grid.h
 /// The labelled voxel grid produced by `voxelize_point_set()`.
 
+#include <CGAL/number_utils.h>
+
 #include <array>
 #include <cmath>
 #include <cstddef>

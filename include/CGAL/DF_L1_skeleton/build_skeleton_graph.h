@@ -130,7 +130,8 @@ void merge_close_junctions(Curve_graph& g, const Field_lookup<Traits>& field)
 /// With the plain L1-medial method, the graph is the traced branches and bridges.
 ///
 /// For both methods: the curves are smoothed (3 passes) and resampled every 2 voxels;
-/// each vertex gets the distance value at its position as its radius. The `points`
+/// each vertex gets the distance value at its position as its radius (at least half a
+/// voxel: a part thinner than the voxels has no interior voxel). The `points`
 /// lists stay empty: fill them with `assign_points_to_skeleton()`.
 ///
 /// \param samples the result of `contract_samples()`
@@ -170,15 +171,23 @@ Skeleton_graph<Traits> build_skeleton_graph(const Contracted_samples<Traits>& sa
     for(const auto& e : samples.edges)
       g.add_edge(id[e.first], id[e.second]);
   }
-  g.smooth(3);
-  const Curve_graph r = g.resampled(2 * voxel);
+  // With the guidance every move keeps the vertex inside and about as deep (a thin bend
+  // would otherwise be cut across the surface); the plain method has no field to ask.
+  const bool guided = samples.method == Skeletonization_method::DISTANCE_FIELD_GUIDED;
+  g.smooth(3, [&](const Vec3& from, const Vec3& to) {
+    return !guided ||
+           (lookup.segment_inside(from, to) && lookup.distance(to) >= lookup.distance(from) - 0.5 * voxel);
+  });
+  const Curve_graph r = g.resampled(2 * voxel, [&](const Vec3& p) { return !guided || lookup.is_inside(p); });
 
   Skeleton_graph<Traits> skeleton;
   for(std::size_t v = 0; v < r.x.size(); ++v)
   {
     const auto u = boost::add_vertex(skeleton);
     skeleton[u].point = typename Traits::Point_3(r.x[v][0], r.x[v][1], r.x[v][2]);
-    skeleton[u].radius = typename Traits::FT(lookup.distance(r.x[v]));
+    // A part thinner than the voxels is all boundary voxels, whose distance is 0: the
+    // surface crosses the vertex's voxel, half a voxel away at most on average.
+    skeleton[u].radius = typename Traits::FT((std::max)(lookup.distance(r.x[v]), 0.5 * voxel));
   }
   for(std::size_t v = 0; v < r.x.size(); ++v)
     for(std::size_t w : r.adj[v])

@@ -16,6 +16,7 @@
 #include <CGAL/DF_L1_skeleton/named_parameters.h>
 
 #include <CGAL/Named_function_parameters.h>
+#include <CGAL/squared_distance_3.h>
 
 #include <algorithm>
 #include <array>

@@ -7,6 +7,8 @@
 /// Topological counts of a skeleton graph (what the report and the tests look at).
 
 #include <CGAL/Iterator_range.h>
+#include <CGAL/number_utils.h>
+#include <CGAL/squared_distance_3.h>
 
 #include <boost/graph/adjacency_list.hpp>
 #include <boost/graph/connected_components.hpp>

@@ -90,16 +90,22 @@ struct Curve_graph
     }
   }
 
-  // Three passes of Laplacian smoothing of the vertices of degree 2 (ends and junctions
-  // stay, so that branches keep their length and meet where they met).
-  void smooth(int passes)
+  // Passes of Laplacian smoothing of the vertices of degree 2 (ends and junctions stay,
+  // so that branches keep their length and meet where they met); a move is made only
+  // when `accept(from, to)` agrees.
+  template <class Accept>
+  void smooth(int passes, const Accept& accept)
   {
     for(int p = 0; p < passes; ++p)
     {
       const std::vector<Vec3> old = x;
       for(std::size_t v = 0; v < x.size(); ++v)
         if(alive[v] && adj[v].size() == 2)
-          x[v] = 0.5 * old[v] + 0.25 * (old[adj[v][0]] + old[adj[v][1]]);
+        {
+          const Vec3 target = 0.5 * old[v] + 0.25 * (old[adj[v][0]] + old[adj[v][1]]);
+          if(accept(old[v], target))
+            x[v] = target;
+        }
     }
   }
 
@@ -152,7 +158,10 @@ struct Curve_graph
 
   // A copy with every chain replaced by points spaced about `step` apart along it (at
   // least one segment per chain, two for a closed loop, three for a loop on itself).
-  Curve_graph resampled(double step) const
+  // An interpolated point for which `inside` is false (a chord across a thin bend) is
+  // replaced by the nearer end of its segment.
+  template <class Inside>
+  Curve_graph resampled(double step, const Inside& inside) const
   {
     Curve_graph out;
     std::vector<std::size_t> kept(x.size(), npos);
@@ -179,7 +188,10 @@ struct Curve_graph
         while(seg + 1 < at.size() && at[seg] < s)
           ++seg;
         const double t = at[seg] > at[seg - 1] ? (s - at[seg - 1]) / (at[seg] - at[seg - 1]) : 0;
-        const std::size_t v = out.add_vertex(x[chain[seg - 1]] + t * (x[chain[seg]] - x[chain[seg - 1]]));
+        const Vec3& a = x[chain[seg - 1]];
+        const Vec3& b = x[chain[seg]];
+        const Vec3 p = a + t * (b - a);
+        const std::size_t v = out.add_vertex(inside(p) ? p : (t < 0.5 ? a : b));
         out.add_edge(prev, v);
         prev = v;
       }

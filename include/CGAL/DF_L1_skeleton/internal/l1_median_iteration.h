@@ -71,6 +71,12 @@ public:
     const std::size_t v = voxel(p);
     return v == npos ? 0 : values_[v] * voxel_;
   }
+  // whether p lies in a boundary or interior voxel
+  bool is_inside(const Vec3& p) const
+  {
+    const std::size_t v = voxel(p);
+    return v != npos && Voxel_grid<Traits>::is_occupied(labels_[v]);
+  }
   // The distance-field constraint of section 6.1: a step from p to q is allowed unless q
   // is outside the shape or in a voxel of smaller distance value than p's.
   bool allows_step(const Vec3& p, const Vec3& q) const

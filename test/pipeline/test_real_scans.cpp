@@ -1,0 +1,95 @@
+// The whole pipeline on the real scans of ../shared/data (skipped, with a message, when
+// the folder is absent): what must hold on any scan, and the topology the issue names
+// for the fertility statue (genus 4).
+#include "support/skeleton_quality.h"
+
+#include <CGAL/DF_L1_skeleton.h>
+#include <CGAL/DF_L1_skeleton/IO/read_point_cloud.h>
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace DF = CGAL::DF_L1;
+typedef CGAL::Exact_predicates_inexact_constructions_kernel Kernel;
+typedef Kernel::Point_3 Point;
+
+namespace {
+
+// the path of a shared scan, or "" when it is absent
+std::string scan_path(const std::string& file)
+{
+#ifdef DF_L1_SHARED_DATA_DIR
+  const std::string path = std::string(DF_L1_SHARED_DATA_DIR) + "/" + file;
+  std::error_code ec;
+  if(std::filesystem::is_regular_file(path, ec))
+    return path;
+#endif
+  return std::string();
+}
+
+} // namespace
+
+TEST_CASE("real scans: one skeleton inside the occupied voxels, every point assigned", "[real]")
+{
+  int found = 0;
+  for(const std::string file : {"camel_scan.off", "fertility_partial_scan.off", "woman_scan.off", "dinopet_noisy.xyz",
+                                "bunny_noisy.ply", "tree_scan.off"})
+  {
+    const std::string path = scan_path(file);
+    if(path.empty())
+    {
+      WARN("skipped " << file << ": not found in the shared data folder (DF_L1_SHARED_DATA_DIR)");
+      continue;
+    }
+    ++found;
+    INFO(file);
+    const auto cloud = DF::read_point_cloud<Kernel>(path);
+    CGAL::DF_L1_skeletonization<Kernel> s(cloud.points);
+    const DF::Skeleton_graph<Kernel>& g = s.skeleton();
+    REQUIRE(boost::num_vertices(g) > 1);
+    const auto& field = s.distance_field();
+    std::size_t outside = 0;
+    for(std::size_t v = 0; v < boost::num_vertices(g); ++v)
+    {
+      const Point& p = g[v].point;
+      REQUIRE((std::isfinite(p.x()) && std::isfinite(p.y()) && std::isfinite(p.z())));
+      CHECK(g[v].radius > 0);
+      const auto cell = field.locate(p);
+      const DF::Voxel_label label = field.labels[field.index(cell[0], cell[1], cell[2])];
+      outside += !(label == DF::Voxel_label::BOUNDARY || label == DF::Voxel_label::INTERIOR);
+    }
+    CHECK(outside == 0);
+    std::vector<int> owner(cloud.points.size(), 0);
+    for(std::size_t v = 0; v < boost::num_vertices(g); ++v)
+      for(std::size_t i : g[v].points)
+        ++owner[i];
+    const std::vector<bool>& outliers = s.outlier_flags();
+    std::size_t wrong = 0;
+    for(std::size_t i = 0; i < owner.size(); ++i)
+      wrong += owner[i] != (outliers[i] ? 0 : 1);
+    CHECK(wrong == 0);
+    // the noisy scans are smoothed, the others are not
+    CHECK(s.denoised() == (file == "dinopet_noisy.xyz" || file == "bunny_noisy.ply"));
+  }
+  if(found == 0)
+    WARN("skipped: no real scan found");
+}
+
+TEST_CASE("real scans: the partial fertility scan gives one component with its 4 handles", "[real]")
+{
+  const std::string path = scan_path("fertility_partial_scan.off");
+  if(path.empty())
+  {
+    WARN("skipped: fertility_partial_scan.off not found in the shared data folder");
+    return;
+  }
+  const auto cloud = DF::read_point_cloud<Kernel>(path);
+  CGAL::DF_L1_skeletonization<Kernel> s(cloud.points);
+  const DF::Skeleton_statistics st = DF::skeleton_statistics(s.skeleton());
+  CHECK(st.components == 1);
+  CHECK(st.cycles == 4);
+}
