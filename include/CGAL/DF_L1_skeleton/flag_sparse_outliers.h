@@ -13,6 +13,8 @@
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/Orthogonal_incremental_neighbor_search.h>
 #include <CGAL/Orthogonal_k_neighbor_search.h>
+#include <CGAL/Spatial_sort_traits_adapter_3.h>
+#include <CGAL/hilbert_sort.h>
 #include <CGAL/Search_traits_3.h>
 #include <CGAL/Search_traits_adapter.h>
 #include <CGAL/boost/graph/named_params_helper.h>
@@ -144,7 +146,12 @@ std::vector<bool> flag_sparse_outliers(const PointRange& points, unsigned int k 
       neighbours[i * k + found] = i;
     kth[i] = std::sqrt(d2);
   };
-  internal::for_each_index<ConcurrencyTag>(n, measure);
+  // Queries in the order of a Hilbert curve: consecutive queries visit the same tree
+  // nodes (the input order of a scan or a generator is often random in space).
+  std::vector<std::size_t> query_order = ids;
+  CGAL::hilbert_sort(query_order.begin(), query_order.end(),
+                     CGAL::Spatial_sort_traits_adapter_3<Traits, Index_point_map>(ipm), CGAL::Hilbert_sort_median_policy());
+  internal::for_each_index<ConcurrencyTag>(n, [&](std::size_t q) { measure(query_order[q]); });
   std::vector<double> sorted = kth;
   std::nth_element(sorted.begin(), sorted.begin() + n / 2, sorted.end());
   const double threshold = ratio * sorted[n / 2];

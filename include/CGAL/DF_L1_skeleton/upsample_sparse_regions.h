@@ -96,7 +96,8 @@ OutputIterator upsample_sparse_regions(const PointRange& points, OutputIterator 
     grid.for_each_in_ball(xyz[i], r, [&](std::size_t, double) { return ++found <= k; });
     sparse[i] = found <= k;
   };
-  internal::for_each_index<ConcurrencyTag>(n, test, 1024);
+  const std::vector<std::size_t>& by_cell = grid.indices_by_cell();
+  internal::for_each_index<ConcurrencyTag>(n, [&](std::size_t q) { test(by_cell[q]); }, 1024);
 
   std::vector<std::pair<std::size_t, std::size_t>> pairs;
   std::vector<std::size_t> neighbours;

@@ -62,6 +62,9 @@ public:
 
   double cell_size() const { return cell_; }
 
+  // The point indices cell by cell: queries made in this order reuse the cells in cache.
+  const std::vector<std::size_t>& indices_by_cell() const { return order_; }
+
   // Calls f(index, squared distance) for every point within `radius` of `q`, cell by cell;
   // f returns false to stop the search early.
   template <class F>
