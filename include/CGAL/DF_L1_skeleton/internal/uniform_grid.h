@@ -95,7 +95,63 @@ public:
         }
   }
 
+  // Whether at least `count` points lie within `radius` of `q`. The cell of `q` is
+  // searched first: in a dense region it holds enough points, and the test costs one cell
+  // instead of the whole ball.
+  bool has_at_least(const std::array<double, 3>& q, double radius, std::size_t count) const
+  {
+    if(count == 0)
+      return true;
+    const double r2 = radius * radius;
+    std::size_t found = 0;
+    const std::size_t own = cell_index(cell_coordinates(q));
+    for(std::size_t s = start_[own]; s < start_[own + 1]; ++s)
+    {
+      const std::array<double, 3>& p = points_[order_[s]];
+      if((p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) + (p[2] - q[2]) * (p[2] - q[2]) <= r2 &&
+         ++found == count)
+        return true;
+    }
+    bool enough = false;
+    for_each_cell_in_ball(q, radius, [&](std::size_t c) {
+      if(c == own)
+        return true;
+      for(std::size_t s = start_[c]; s < start_[c + 1]; ++s)
+      {
+        const std::array<double, 3>& p = points_[order_[s]];
+        if((p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) + (p[2] - q[2]) * (p[2] - q[2]) <= r2 &&
+           ++found == count)
+        {
+          enough = true;
+          return false;
+        }
+      }
+      return true;
+    });
+    return enough;
+  }
+
 private:
+  // Calls f(cell index) for every cell meeting the bounding box of the ball; f returns
+  // false to stop.
+  template <class F>
+  void for_each_cell_in_ball(const std::array<double, 3>& q, double radius, const F& f) const
+  {
+    std::array<int, 3> lo, hi;
+    for(int a = 0; a < 3; ++a)
+    {
+      lo[a] = (std::max)(0, int(std::floor((q[a] - radius - lo_[a]) / cell_)));
+      hi[a] = (std::min)(dims_[a] - 1, int(std::floor((q[a] + radius - lo_[a]) / cell_)));
+      if(lo[a] > hi[a])
+        return;
+    }
+    for(int k = lo[2]; k <= hi[2]; ++k)
+      for(int j = lo[1]; j <= hi[1]; ++j)
+        for(int i = lo[0]; i <= hi[0]; ++i)
+          if(!f(cell_index({{i, j, k}})))
+            return;
+  }
+
   std::array<int, 3> cell_coordinates(const std::array<double, 3>& p) const
   {
     std::array<int, 3> c;
