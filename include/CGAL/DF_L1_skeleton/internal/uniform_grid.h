@@ -70,29 +70,8 @@ public:
   template <class F>
   void for_each_in_ball(const std::array<double, 3>& q, double radius, const F& f) const
   {
-    std::array<int, 3> lo, hi;
-    for(int a = 0; a < 3; ++a)
-    {
-      lo[a] = (std::max)(0, int(std::floor((q[a] - radius - lo_[a]) / cell_)));
-      hi[a] = (std::min)(dims_[a] - 1, int(std::floor((q[a] + radius - lo_[a]) / cell_)));
-      if(lo[a] > hi[a])
-        return;
-    }
     const double r2 = radius * radius;
-    for(int k = lo[2]; k <= hi[2]; ++k)
-      for(int j = lo[1]; j <= hi[1]; ++j)
-        for(int i = lo[0]; i <= hi[0]; ++i)
-        {
-          const std::size_t c = cell_index({{i, j, k}});
-          for(std::size_t s = start_[c]; s < start_[c + 1]; ++s)
-          {
-            const std::array<double, 3>& p = points_[order_[s]];
-            const double d2 = (p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) +
-                              (p[2] - q[2]) * (p[2] - q[2]);
-            if(d2 <= r2 && !f(order_[s], d2))
-              return;
-          }
-        }
+    for_each_cell_in_ball(q, radius, [&](std::size_t c) { return for_each_in_cell(c, q, r2, f); });
   }
 
   // Whether at least `count` points lie within `radius` of `q`. The cell of `q` is
@@ -104,29 +83,14 @@ public:
       return true;
     const double r2 = radius * radius;
     std::size_t found = 0;
+    const auto counted = [&](std::size_t, double) { return ++found < count; }; // false: enough
     const std::size_t own = cell_index(cell_coordinates(q));
-    for(std::size_t s = start_[own]; s < start_[own + 1]; ++s)
-    {
-      const std::array<double, 3>& p = points_[order_[s]];
-      if((p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) + (p[2] - q[2]) * (p[2] - q[2]) <= r2 &&
-         ++found == count)
-        return true;
-    }
+    if(!for_each_in_cell(own, q, r2, counted))
+      return true;
     bool enough = false;
     for_each_cell_in_ball(q, radius, [&](std::size_t c) {
-      if(c == own)
-        return true;
-      for(std::size_t s = start_[c]; s < start_[c + 1]; ++s)
-      {
-        const std::array<double, 3>& p = points_[order_[s]];
-        if((p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) + (p[2] - q[2]) * (p[2] - q[2]) <= r2 &&
-           ++found == count)
-        {
-          enough = true;
-          return false;
-        }
-      }
-      return true;
+      enough = c != own && !for_each_in_cell(c, q, r2, counted);
+      return !enough;
     });
     return enough;
   }
@@ -150,6 +114,21 @@ private:
         for(int i = lo[0]; i <= hi[0]; ++i)
           if(!f(cell_index({{i, j, k}})))
             return;
+  }
+
+  // Calls f(index, squared distance) for the points of cell `c` within sqrt(r2) of `q`;
+  // false when f stopped the search.
+  template <class F>
+  bool for_each_in_cell(std::size_t c, const std::array<double, 3>& q, double r2, const F& f) const
+  {
+    for(std::size_t s = start_[c]; s < start_[c + 1]; ++s)
+    {
+      const std::array<double, 3>& p = points_[order_[s]];
+      const double d2 = (p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) + (p[2] - q[2]) * (p[2] - q[2]);
+      if(d2 <= r2 && !f(order_[s], d2))
+        return false;
+    }
+    return true;
   }
 
   std::array<int, 3> cell_coordinates(const std::array<double, 3>& p) const
