@@ -224,6 +224,29 @@ void for_each_face_neighbour(const Grid_geometry<Traits>& g, std::size_t v, cons
   }
 }
 
+// Marks every voxel that a 6-connected walk from the marked voxels reaches through
+// voxels where `can_enter` holds.
+template <class Traits, class CanEnter>
+void grow_face_connected(const Grid_geometry<Traits>& g, std::vector<char>& marked, const CanEnter& can_enter)
+{
+  std::vector<std::size_t> stack;
+  for(std::size_t v = 0; v < marked.size(); ++v)
+    if(marked[v])
+      stack.push_back(v);
+  while(!stack.empty())
+  {
+    const std::size_t v = stack.back();
+    stack.pop_back();
+    for_each_face_neighbour(g, v, [&](std::size_t w) {
+      if(!marked[w] && can_enter(w))
+      {
+        marked[w] = 1;
+        stack.push_back(w);
+      }
+    });
+  }
+}
+
 // Centres that a ball of radius sqrt(r2) reaches by rolling in from the exterior without
 // touching a boundary voxel centre: a 6-connected walk, clear of the boundary.
 template <class Traits>
@@ -231,25 +254,9 @@ std::vector<char> ball_centres(const Grid_geometry<Traits>& g, const std::vector
                                const std::vector<float>& to_boundary, float r2)
 {
   std::vector<char> centre(labels.size(), 0);
-  std::vector<std::size_t> stack;
   for(std::size_t v = 0; v < labels.size(); ++v)
-    if(labels[v] == std::uint8_t(Voxel_label::EXTERIOR) && to_boundary[v] > r2)
-    {
-      centre[v] = 1;
-      stack.push_back(v);
-    }
-  while(!stack.empty())
-  {
-    const std::size_t v = stack.back();
-    stack.pop_back();
-    for_each_face_neighbour(g, v, [&](std::size_t w) {
-      if(!centre[w] && to_boundary[w] > r2)
-      {
-        centre[w] = 1;
-        stack.push_back(w);
-      }
-    });
-  }
+    centre[v] = labels[v] == std::uint8_t(Voxel_label::EXTERIOR) && to_boundary[v] > r2;
+  grow_face_connected(g, centre, [&](std::size_t w) { return to_boundary[w] > r2; });
   return centre;
 }
 
@@ -339,22 +346,9 @@ std::vector<char> voted_interior(const Grid_geometry<Traits>& g, const std::vect
   });
   // Hysteresis, into the flood exterior only: near a hole the vote fades, and the
   // leaked flood would otherwise leave a pocket in the part.
-  std::vector<std::size_t> stack;
-  for(std::size_t v = 0; v < n; ++v)
-    if(inside[v])
-      stack.push_back(v);
-  while(!stack.empty())
-  {
-    const std::size_t v = stack.back();
-    stack.pop_back();
-    for_each_face_neighbour(g, v, [&](std::size_t w) {
-      if(!inside[w] && !shell[w] && labels[w] == E && mean[w] >= INSIDE_GROWTH_VOTES)
-      {
-        inside[w] = 1;
-        stack.push_back(w);
-      }
-    });
-  }
+  grow_face_connected(g, inside, [&](std::size_t w) {
+    return !shell[w] && labels[w] == E && mean[w] >= INSIDE_GROWTH_VOTES;
+  });
   // Where the flood leaked into a part, it also left a film of exterior voxels on the
   // shell between the inside and the points; a shell voxel nearer to the inside than to
   // any voxel off the shell outside it belongs to the part.
@@ -379,29 +373,13 @@ void drop_enclosed_exterior(const Grid_geometry<Traits>& g, std::vector<std::uin
 {
   const std::uint8_t E = std::uint8_t(Voxel_label::EXTERIOR), I = std::uint8_t(Voxel_label::INTERIOR);
   std::vector<char> reached(labels.size(), 0);
-  std::vector<std::size_t> stack;
   for(std::size_t v = 0; v < labels.size(); ++v)
   {
     const std::array<int, 3> c = g.coordinates(v);
-    if(labels[v] == E && (c[0] == 0 || c[1] == 0 || c[2] == 0 || c[0] == g.dims[0] - 1 ||
-                          c[1] == g.dims[1] - 1 || c[2] == g.dims[2] - 1))
-    {
-      reached[v] = 1;
-      stack.push_back(v);
-    }
+    reached[v] = labels[v] == E && (c[0] == 0 || c[1] == 0 || c[2] == 0 || c[0] == g.dims[0] - 1 ||
+                                    c[1] == g.dims[1] - 1 || c[2] == g.dims[2] - 1);
   }
-  while(!stack.empty())
-  {
-    const std::size_t v = stack.back();
-    stack.pop_back();
-    for_each_face_neighbour(g, v, [&](std::size_t w) {
-      if(!reached[w] && labels[w] == E)
-      {
-        reached[w] = 1;
-        stack.push_back(w);
-      }
-    });
-  }
+  grow_face_connected(g, reached, [&](std::size_t w) { return labels[w] == E; });
   for(std::size_t v = 0; v < labels.size(); ++v)
     if(labels[v] == E && !reached[v])
       labels[v] = I;
@@ -457,34 +435,15 @@ void sweep_exterior_with_balls(const Grid_geometry<Traits>& g, std::vector<std::
       }
     });
   }
-  std::vector<char> seen(n, 0);
-  std::vector<std::size_t> region, stack;
-  for(std::size_t v = 0; v < n; ++v)
-  {
-    if(!small_centre[v] || steps[v] == 0 || seen[v])
-      continue;
-    region.clear();
-    int deepest = 0;
-    seen[v] = 1;
-    stack.push_back(v);
-    while(!stack.empty())
-    {
-      const std::size_t u = stack.back();
-      stack.pop_back();
-      region.push_back(u);
-      deepest = (std::max)(deepest, steps[u]); // >= 1: every centre is reached from the exterior
-      for_each_face_neighbour(g, u, [&](std::size_t w) {
-        if(small_centre[w] && steps[w] != 0 && !seen[w])
-        {
-          seen[w] = 1;
-          stack.push_back(w);
-        }
-      });
-    }
-    if(deepest > depth)
-      for(std::size_t u : region)
-        small_centre[u] = 0;
-  }
+  for_each_region(g, [&](std::size_t v) { return small_centre[v] && steps[v] != 0; },
+                  [&](const std::vector<std::size_t>& region) {
+                    int deepest = 0; // >= 1: every centre is reached from the exterior
+                    for(std::size_t u : region)
+                      deepest = (std::max)(deepest, steps[u]);
+                    if(deepest > depth)
+                      for(std::size_t u : region)
+                        small_centre[u] = 0;
+                  });
 
   // One transform for both sweeps: a small centre starts at L2 - S2, so that a voxel
   // within `small` of it gets a value <= L2, as one within `large` of a large centre.
