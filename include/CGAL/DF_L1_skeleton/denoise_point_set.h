@@ -7,14 +7,12 @@
 /// Stage 0b: the surface noise of the cloud, and points smoothed onto local quadrics.
 
 #include <CGAL/DF_L1_skeleton/errors.h>
+#include <CGAL/DF_L1_skeleton/internal/indexed_kd_tree.h>
 #include <CGAL/DF_L1_skeleton/internal/parallel_for.h>
 #include <CGAL/DF_L1_skeleton/internal/point_range.h>
 #include <CGAL/DF_L1_skeleton/named_parameters.h>
 
 #include <CGAL/Named_function_parameters.h>
-#include <CGAL/Orthogonal_k_neighbor_search.h>
-#include <CGAL/Search_traits_3.h>
-#include <CGAL/Search_traits_adapter.h>
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/tags.h>
 
@@ -22,7 +20,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <memory>
 #include <vector>
 
 namespace CGAL {
@@ -39,12 +36,7 @@ template <class Traits>
 class Local_quadric_fitter
 {
   typedef typename Traits::Point_3 Point_3;
-  typedef CGAL::Search_traits_3<Traits> Base_traits;
-  typedef typename CGAL::Pointer_property_map<Point_3>::const_type Index_point_map;
-  typedef CGAL::Search_traits_adapter<std::size_t, Index_point_map, Base_traits> Search_traits;
-  typedef CGAL::Orthogonal_k_neighbor_search<Search_traits> Search;
-  typedef typename Search::Tree Tree;
-  typedef typename Search::Distance Distance;
+  typedef typename Indexed_kd_tree<Traits>::K_neighbor_search Search;
 
 public:
   struct Fit
@@ -55,12 +47,8 @@ public:
   };
 
   Local_quadric_fitter(const std::vector<Point_3>& points, unsigned int k)
-    : points_(points), k_(k), map_(points_.data()), ids_(points.size()), distance_(map_)
+    : points_(points), k_(k), tree_(points)
   {
-    for(std::size_t i = 0; i < ids_.size(); ++i)
-      ids_[i] = i;
-    tree_ = std::make_unique<Tree>(ids_.begin(), ids_.end(), typename Tree::Splitter(), Search_traits(map_));
-    tree_->build();
   }
 
   Fit fit(std::size_t i) const
@@ -68,7 +56,7 @@ public:
     Fit result;
     std::vector<Eigen::Vector3d> q;
     q.reserve(k_);
-    Search search(*tree_, points_[i], k_, 0, true, distance_);
+    Search search(tree_.tree(), points_[i], k_, 0, true, tree_.distance());
     for(const auto& neighbour : search)
     {
       const Point_3& p = points_[neighbour.first];
@@ -115,10 +103,7 @@ public:
 private:
   const std::vector<Point_3>& points_;
   unsigned int k_;
-  Index_point_map map_;
-  std::vector<std::size_t> ids_;
-  Distance distance_;
-  std::unique_ptr<Tree> tree_;
+  Indexed_kd_tree<Traits> tree_;
 };
 
 template <class PointRange, class PointMap>

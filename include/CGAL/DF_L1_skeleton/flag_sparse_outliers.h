@@ -7,16 +7,14 @@
 /// Stage 0a: outlier points far from every other sample, flagged before voxelization.
 
 #include <CGAL/DF_L1_skeleton/errors.h>
+#include <CGAL/DF_L1_skeleton/internal/indexed_kd_tree.h>
 #include <CGAL/DF_L1_skeleton/internal/parallel_for.h>
 #include <CGAL/DF_L1_skeleton/internal/point_range.h>
 
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/Orthogonal_incremental_neighbor_search.h>
-#include <CGAL/Orthogonal_k_neighbor_search.h>
 #include <CGAL/Spatial_sort_traits_adapter_3.h>
 #include <CGAL/hilbert_sort.h>
-#include <CGAL/Search_traits_3.h>
-#include <CGAL/Search_traits_adapter.h>
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/tags.h>
 
@@ -88,13 +86,10 @@ std::vector<bool> flag_sparse_outliers(const PointRange& points, unsigned int k 
   typedef Point_set_processing_3_np_helper<const PointRange, NamedParameters> NP_helper;
   typedef typename NP_helper::Geom_traits Traits;
   typedef typename Traits::Point_3 Point_3;
-  typedef CGAL::Search_traits_3<Traits> Base_traits;
-  typedef typename CGAL::Pointer_property_map<Point_3>::const_type Index_point_map;
-  typedef CGAL::Search_traits_adapter<std::size_t, Index_point_map, Base_traits> Search_traits;
-  typedef CGAL::Orthogonal_k_neighbor_search<Search_traits> Search;
-  typedef typename Search::Tree Tree;
-  typedef typename Search::Distance Distance;
-  typedef CGAL::Orthogonal_incremental_neighbor_search<Search_traits, Distance, typename Tree::Splitter, Tree>
+  typedef internal::Indexed_kd_tree<Traits> Kd_tree;
+  typedef typename Kd_tree::K_neighbor_search Search;
+  typedef CGAL::Orthogonal_incremental_neighbor_search<typename Kd_tree::Search_traits, typename Kd_tree::Distance,
+                                                       typename Kd_tree::Tree::Splitter, typename Kd_tree::Tree>
     Incremental_search;
 
   if(k < 1 || !(ratio > 1) || !std::isfinite(ratio) || !(local_ratio > 1))
@@ -109,13 +104,10 @@ std::vector<bool> flag_sparse_outliers(const PointRange& points, unsigned int k 
   if(n <= k + 1)
     return flags;
 
-  const Index_point_map ipm(xyz.data());
-  std::vector<std::size_t> ids(n);
-  for(std::size_t i = 0; i < n; ++i)
-    ids[i] = i;
-  Tree tree(ids.begin(), ids.end(), typename Tree::Splitter(), Search_traits(ipm));
-  tree.build();
-  const Distance distance(ipm);
+  const Kd_tree kd_tree(xyz);
+  const auto& tree = kd_tree.tree();
+  const auto& distance = kd_tree.distance();
+  const std::vector<std::size_t>& ids = kd_tree.indices();
 
   // kth[i]: distance to the k-th nearest unflagged point; neighbours[i*k..]: those k points.
   std::vector<double> kth(n);
@@ -150,7 +142,7 @@ std::vector<bool> flag_sparse_outliers(const PointRange& points, unsigned int k 
   // nodes (the input order of a scan or a generator is often random in space).
   std::vector<std::size_t> query_order = ids;
   CGAL::hilbert_sort(query_order.begin(), query_order.end(),
-                     CGAL::Spatial_sort_traits_adapter_3<Traits, Index_point_map>(ipm), CGAL::Hilbert_sort_median_policy());
+                     CGAL::Spatial_sort_traits_adapter_3<Traits, typename Kd_tree::Point_map>(kd_tree.point_map()), CGAL::Hilbert_sort_median_policy());
   internal::for_each_index<ConcurrencyTag>(n, [&](std::size_t q) { measure(query_order[q]); });
   std::vector<double> sorted = kth;
   std::nth_element(sorted.begin(), sorted.begin() + n / 2, sorted.end());
