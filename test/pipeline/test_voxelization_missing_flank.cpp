@@ -41,33 +41,28 @@ std::vector<Point_3> without_flank(const DF_L1_test::Shape& shape, const std::fu
   return kept;
 }
 
-struct Interior_check
-{
-  double deep_interior = 0; // fraction of the voxels more than 2 voxels inside that are interior
-  double worst_outside = 0; // voxels: how far outside the true surface an interior centre is
-};
-
+// The interior of a part behind a missing flank: nearly every voxel more than 2 voxels
+// deep is interior, none bulges more than 2 voxels out of the gap, the exterior is one
+// region.
 template <class Grid>
-Interior_check check_interior(const DF_L1_test::Shape& shape, const Grid& grid)
+void check_kept_interior(const DF_L1_test::Shape& shape, const Grid& grid)
 {
-  const double s = CGAL::to_double(grid.voxel_size);
-  std::size_t deep = 0, deep_interior = 0;
-  Interior_check c;
-  c.worst_outside = -1e9;
-  for(std::size_t v = 0; v < grid.size(); ++v)
-  {
-    const double sd = shape.signed_distance(grid.center(v)) / s;
-    const bool interior = grid.labels[v] == DF::Voxel_label::INTERIOR;
-    if(sd < -2)
-    {
-      ++deep;
-      deep_interior += interior;
-    }
-    if(interior)
-      c.worst_outside = (std::max)(c.worst_outside, sd);
-  }
-  c.deep_interior = deep > 0 ? double(deep_interior) / double(deep) : 0;
-  return c;
+  const DF_L1_test::Interior_census c = DF_L1_test::interior_census(shape, grid);
+  const double deep_interior = c.deep > 0 ? double(c.deep_interior) / double(c.deep) : 0;
+  INFO("deep interior " << deep_interior << ", worst outside " << c.worst);
+  CHECK(deep_interior >= 0.95);
+  CHECK(c.worst <= 2.0);
+  CHECK(DF_L1_test::exterior_is_one_region(grid));
+}
+
+template <class Graph>
+void check_topology(const Graph& g, std::size_t components, std::size_t cycles, std::size_t end_points)
+{
+  const DF::Skeleton_statistics st = DF::skeleton_statistics(g);
+  INFO(st.components << " components, " << st.cycles << " cycles, " << st.end_points << " end points");
+  CHECK(st.components == components);
+  CHECK(st.cycles == cycles);
+  CHECK(st.end_points == end_points);
 }
 
 } // namespace
@@ -84,17 +79,9 @@ TEST_CASE("voxels: a capsule missing a whole flank keeps its interior and one ax
     shape, [](const Point_3&) { return Vector_3(0, 0, 1); }, [](const Point_3& p) { return std::abs(p.x()) < 0.35; });
   CGAL::DF_L1_skeletonization<Kernel> s(points);
   const auto& grid = s.voxel_grid();
-  const Interior_check c = check_interior(shape, grid);
-  INFO("deep interior " << c.deep_interior << ", worst outside " << c.worst_outside);
-  CHECK(c.deep_interior >= 0.95);
-  CHECK(c.worst_outside <= 2.0); // the inside does not bulge out of the missing flank
-  CHECK(DF_L1_test::exterior_is_one_region(grid));
+  check_kept_interior(shape, grid);
   CHECK(s.distance_field().maximum() >= 0.7 * 0.15 / CGAL::to_double(grid.voxel_size));
-  const DF::Skeleton_statistics st = DF::skeleton_statistics(s.initial_skeleton().graph);
-  INFO(st.components << " components, " << st.cycles << " cycles, " << st.end_points << " end points");
-  CHECK(st.components == 1);
-  CHECK(st.cycles == 0);
-  CHECK(st.end_points == 2);
+  check_topology(s.initial_skeleton().graph, 1, 0, 2);
 }
 
 TEST_CASE("voxels: a torus missing its outer flank keeps its tube and its hole", "[voxels][holes]")
@@ -110,18 +97,10 @@ TEST_CASE("voxels: a torus missing its outer flank keeps its tube and its hole",
   const std::vector<Point_3> points = without_flank(shape, outward, [](const Point_3& p) { return p.y() > 0; });
   CGAL::DF_L1_skeletonization<Kernel> s(points);
   const auto& grid = s.voxel_grid();
-  const Interior_check c = check_interior(shape, grid);
-  INFO("deep interior " << c.deep_interior << ", worst outside " << c.worst_outside);
-  CHECK(c.deep_interior >= 0.95);
-  CHECK(c.worst_outside <= 2.0);
-  CHECK(DF_L1_test::exterior_is_one_region(grid));
+  check_kept_interior(shape, grid);
   const auto centre = grid.locate(Point_3(0, 0, 0));
   CHECK(grid.label(centre[0], centre[1], centre[2]) == DF::Voxel_label::EXTERIOR);
-  const DF::Skeleton_statistics st = DF::skeleton_statistics(s.initial_skeleton().graph);
-  INFO(st.components << " components, " << st.cycles << " cycles, " << st.end_points << " end points");
-  CHECK(st.components == 1);
-  CHECK(st.cycles == 1);
-  CHECK(st.end_points == 0);
+  check_topology(s.initial_skeleton().graph, 1, 1, 0);
 }
 
 TEST_CASE("parity votes: a closed shell votes inside everywhere, an open face keeps a majority", "[voxels][holes]")

@@ -61,31 +61,14 @@ TEST_CASE("voxels: the interior survives holes, sparse and uneven sampling, and 
       // capsule and torus with holes and on the sparse helix and many-armed star.
       CHECK(field.maximum() >= (noisy ? 0.45 : 0.6) * max_inscribed_radius(shape) / s);
 
-      std::size_t deep = 0, deep_interior = 0, interior = 0, outside = 0;
-      double worst = -1e9;
-      for(std::size_t v = 0; v < grid.size(); ++v)
-      {
-        const double sd = shape.signed_distance(grid.center(v)) / s;
-        const bool is_interior = grid.labels[v] == DF::Voxel_label::INTERIOR;
-        if(sd < -2)
-        {
-          ++deep;
-          deep_interior += is_interior;
-        }
-        if(is_interior)
-        {
-          ++interior;
-          outside += sd > 0.5;
-          worst = (std::max)(worst, sd);
-        }
-      }
-      REQUIRE(deep > 0);
+      const DF_L1_test::Interior_census census = DF_L1_test::interior_census(shape, grid);
+      REQUIRE(census.deep > 0);
       // Noise puts points inside the shape, whose voxels are boundary, not interior.
-      CHECK(double(deep_interior) >= (noisy ? 0.6 : 0.75) * double(deep));
+      CHECK(double(census.deep_interior) >= (noisy ? 0.6 : 0.75) * double(census.deep));
       if(noisy) // the noisy shell encloses empty voxels up to about 3 sigma outside
-        CHECK(worst <= 3 * 0.01 * shape.bbox_diagonal() / s + 1.5);
+        CHECK(census.worst <= 3 * 0.01 * shape.bbox_diagonal() / s + 1.5);
       else
-        CHECK(double(outside) <= 0.05 * double(interior));
+        CHECK(double(census.outside) <= 0.05 * double(census.interior));
 
       CHECK(DF_L1_test::exterior_is_one_region(grid));
       // The real holes of the shape stay exterior.

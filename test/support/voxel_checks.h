@@ -7,6 +7,7 @@
 
 #include <CGAL/DF_L1_skeleton/Voxel_grid.h>
 
+#include <algorithm>
 #include <cstddef>
 #include <vector>
 
@@ -56,6 +57,41 @@ template <class Grid>
 bool exterior_is_one_region(const Grid& g)
 {
   return exterior_reachable_from_border(g) == g.count(CGAL::DF_L1::Voxel_label::EXTERIOR);
+}
+
+// Where the interior voxels lie against the true shape, in voxels of signed distance
+// (negative inside).
+struct Interior_census
+{
+  std::size_t deep = 0;          // voxels more than 2 voxels inside the shape
+  std::size_t deep_interior = 0; // of those, the ones labelled interior
+  std::size_t interior = 0;      // interior voxels
+  std::size_t outside = 0;       // interior voxels more than half a voxel outside the shape
+  double worst = -1e9;           // the largest signed distance of an interior voxel centre
+};
+
+template <class Shape, class Grid>
+Interior_census interior_census(const Shape& shape, const Grid& grid)
+{
+  const double s = CGAL::to_double(grid.voxel_size);
+  Interior_census c;
+  for(std::size_t v = 0; v < grid.size(); ++v)
+  {
+    const double sd = shape.signed_distance(grid.center(v)) / s;
+    const bool is_interior = grid.labels[v] == CGAL::DF_L1::Voxel_label::INTERIOR;
+    if(sd < -2)
+    {
+      ++c.deep;
+      c.deep_interior += is_interior;
+    }
+    if(is_interior)
+    {
+      ++c.interior;
+      c.outside += sd > 0.5;
+      c.worst = (std::max)(c.worst, sd);
+    }
+  }
+  return c;
 }
 
 } // namespace DF_L1_test
