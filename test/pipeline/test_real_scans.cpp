@@ -5,6 +5,7 @@
 
 #include <CGAL/DF_L1_skeleton.h>
 #include <CGAL/DF_L1_skeleton/IO/read_point_cloud.h>
+#include <CGAL/bounding_box.h>
 
 #include <catch2/catch.hpp>
 
@@ -92,4 +93,31 @@ TEST_CASE("real scans: the partial fertility scan gives one component with its 4
   const DF::Skeleton_statistics st = DF::skeleton_statistics(s.skeleton());
   CHECK(st.components == 1);
   CHECK(st.cycles == 4);
+}
+
+TEST_CASE("real scans: the camel is a tree with a branch per leg, the head and the tail", "[real]")
+{
+  const std::string path = scan_path("camel_scan.off");
+  if(path.empty())
+  {
+    WARN("skipped: camel_scan.off not found in the shared data folder");
+    return;
+  }
+  const auto cloud = DF::read_point_cloud<Kernel>(path);
+  CGAL::DF_L1_skeletonization<Kernel> s(cloud.points);
+  const DF::Skeleton_statistics st = DF::skeleton_statistics(s.skeleton());
+  CHECK(st.components == 1);
+  CHECK(st.cycles == 0);
+  CHECK(st.end_points == 6);
+  // six separate extremities, not spurs beside one another
+  const auto& g = s.skeleton();
+  std::vector<Point> ends;
+  for(std::size_t v = 0; v < boost::num_vertices(g); ++v)
+    if(boost::degree(v, g) == 1)
+      ends.push_back(g[v].point);
+  const auto box = CGAL::bounding_box(cloud.points.begin(), cloud.points.end());
+  const double diagonal = std::sqrt(CGAL::squared_distance(box.min(), box.max()));
+  for(std::size_t a = 0; a < ends.size(); ++a)
+    for(std::size_t b = a + 1; b < ends.size(); ++b)
+      CHECK(std::sqrt(CGAL::squared_distance(ends[a], ends[b])) > 0.05 * diagonal);
 }
