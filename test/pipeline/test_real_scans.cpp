@@ -32,6 +32,18 @@ std::string scan_path(const std::string& file)
   return std::string();
 }
 
+// The points of a shared scan, or none (with a warning naming the file) when it is absent.
+std::vector<Point> scan_points(const std::string& file)
+{
+  const std::string path = scan_path(file);
+  if(path.empty())
+  {
+    WARN("skipped: " << file << " not found in the shared data folder");
+    return {};
+  }
+  return DF::read_point_cloud<Kernel>(path).points;
+}
+
 } // namespace
 
 TEST_CASE("real scans: one skeleton inside the occupied voxels, every point assigned", "[real]")
@@ -82,14 +94,10 @@ TEST_CASE("real scans: one skeleton inside the occupied voxels, every point assi
 
 TEST_CASE("real scans: the partial fertility scan gives one component with its 4 handles", "[real]")
 {
-  const std::string path = scan_path("fertility_partial_scan.off");
-  if(path.empty())
-  {
-    WARN("skipped: fertility_partial_scan.off not found in the shared data folder");
+  const std::vector<Point> points = scan_points("fertility_partial_scan.off");
+  if(points.empty())
     return;
-  }
-  const auto cloud = DF::read_point_cloud<Kernel>(path);
-  CGAL::DF_L1_skeletonization<Kernel> s(cloud.points);
+  CGAL::DF_L1_skeletonization<Kernel> s(points);
   const DF::Skeleton_statistics st = DF::skeleton_statistics(s.skeleton());
   CHECK(st.components == 1);
   CHECK(st.cycles == 4);
@@ -97,14 +105,10 @@ TEST_CASE("real scans: the partial fertility scan gives one component with its 4
 
 TEST_CASE("real scans: the camel is a tree with a branch per leg, the head and the tail", "[real]")
 {
-  const std::string path = scan_path("camel_scan.off");
-  if(path.empty())
-  {
-    WARN("skipped: camel_scan.off not found in the shared data folder");
+  const std::vector<Point> points = scan_points("camel_scan.off");
+  if(points.empty())
     return;
-  }
-  const auto cloud = DF::read_point_cloud<Kernel>(path);
-  CGAL::DF_L1_skeletonization<Kernel> s(cloud.points);
+  CGAL::DF_L1_skeletonization<Kernel> s(points);
   const DF::Skeleton_statistics st = DF::skeleton_statistics(s.skeleton());
   CHECK(st.components == 1);
   CHECK(st.cycles == 0);
@@ -115,7 +119,7 @@ TEST_CASE("real scans: the camel is a tree with a branch per leg, the head and t
   for(std::size_t v = 0; v < boost::num_vertices(g); ++v)
     if(boost::degree(v, g) == 1)
       ends.push_back(g[v].point);
-  const auto box = CGAL::bounding_box(cloud.points.begin(), cloud.points.end());
+  const auto box = CGAL::bounding_box(points.begin(), points.end());
   const double diagonal = std::sqrt(CGAL::squared_distance(box.min(), box.max()));
   for(std::size_t a = 0; a < ends.size(); ++a)
     for(std::size_t b = a + 1; b < ends.size(); ++b)
