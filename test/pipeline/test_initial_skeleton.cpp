@@ -103,6 +103,38 @@ TEST_CASE("initial skeleton: right components, loops and end points on every sha
     }
 }
 
+TEST_CASE("initial skeleton: the curve runs along a part thinner than two voxels to its tip", "[initial][thin]")
+{
+  // A body 10 voxels in radius and a rod of 0.75 voxel radius: the rod has no skeleton
+  // voxel, only occupied ones.
+  DF_L1_test::Shape shape("body_and_twig", {2, 0, 0, 1});
+  shape.add_round_cone(Point_3(-0.5, 0, 0), Point_3(0, 0, 0), 0.15, 0.15);
+  shape.add_round_cone(Point_3(0, 0, 0), Point_3(0.6, 0, 0), 0.01, 0.01);
+  const Volumetric_result r = run_volumetric_stages(DF_L1_test::make_sample(shape, Variant::clean, 20000, 7).points);
+  REQUIRE(r.voxel_size > 0.01); // the rod is under a voxel in radius
+  const auto farthest_x = [](const DF::Skeleton_graph<Kernel>& g) {
+    double x = -1e9;
+    for(std::size_t v = 0; v < boost::num_vertices(g); ++v)
+      x = (std::max)(x, CGAL::to_double(g[v].point.x()));
+    return x;
+  };
+  const DF::Skeleton_statistics s = DF::skeleton_statistics(r.initial.graph);
+  CHECK(s.components == 1);
+  CHECK(s.cycles == 0);
+  CHECK(s.end_points == 2);
+  CHECK(farthest_x(r.initial.graph) > 0.6 - 5 * r.voxel_size);
+  // every vertex on the rod stays on its axis
+  for(std::size_t v = 0; v < boost::num_vertices(r.initial.graph); ++v)
+  {
+    const Point_3& p = r.initial.graph[v].point;
+    if(p.x() > 0.2)
+      CHECK(std::hypot(CGAL::to_double(p.y()), CGAL::to_double(p.z())) < 1.5 * r.voxel_size);
+  }
+  // without the thin parts, the curve stops in the body
+  const auto stopped = DF::extract_initial_skeleton(r.field, CGAL::parameters::thin_parts(false));
+  CHECK(farthest_x(stopped.graph) < 0.1);
+}
+
 TEST_CASE("initial skeleton: noisy capsule, Y-junction and torus keep their topology", "[initial]")
 {
   for(const std::string name : {"capsule", "y_junction", "torus"})

@@ -184,7 +184,7 @@ TEST_CASE("real scans: the camel, missing most of a flank, is one tree", "[voxel
   CHECK(initial.components == 1);
   CHECK(initial.cycles == 0);
   CHECK(initial.end_points >= 5); // 4 legs and the head at least
-  CHECK(initial.end_points <= 10);
+  CHECK(initial.end_points <= 16); // with the hair of the thin lower legs, which the final skeleton prunes
   const DF::Skeleton_statistics final_skeleton = DF::skeleton_statistics(s.skeleton());
   INFO("final: " << final_skeleton.components << " components, " << final_skeleton.cycles << " cycles");
   CHECK(final_skeleton.components == 1);

@@ -46,6 +46,7 @@ enum df_l1_branch_directionality_t { df_l1_branch_directionality };
 enum df_l1_contraction_stages_t { df_l1_contraction_stages };
 enum df_l1_denoising_t { df_l1_denoising };
 enum df_l1_denoising_neighbors_t { df_l1_denoising_neighbors };
+enum df_l1_thin_parts_t { df_l1_thin_parts };
 } // namespace internal_np
 
 namespace parameters {
@@ -95,6 +96,11 @@ CGAL_DF_L1_ADD_NAMED_PARAMETER(df_l1_outlier_component_size, outlier_component_s
 /// Terminal branches of the initial skeleton shorter than this many times the local
 /// radius at their junction are pruned (default 1).
 CGAL_DF_L1_ADD_NAMED_PARAMETER(df_l1_spur_length, spur_length_ratio)
+/// \ingroup PkgDFL1SkeletonNamedParameters
+/// Whether the initial skeleton's curves enter the parts thinner than two voxels, that
+/// have no skeleton voxel (default `true`; `DF_L1_skeletonization` turns it off for
+/// smoothed noisy clouds, whose ragged shell cannot be told from a thin part).
+CGAL_DF_L1_ADD_NAMED_PARAMETER(df_l1_thin_parts, thin_parts)
 /// \ingroup PkgDFL1SkeletonNamedParameters
 /// The refinement method, a `CGAL::DF_L1::Skeletonization_method` (default
 /// `DISTANCE_FIELD_GUIDED`; `L1_MEDIAL` switches the guidance off, as a baseline).
