@@ -11,6 +11,7 @@
 #include <CGAL/DF_L1_skeleton/errors.h>
 #include <CGAL/DF_L1_skeleton/internal/box_sum.h>
 #include <CGAL/DF_L1_skeleton/internal/curve_thinning.h>
+#include <CGAL/DF_L1_skeleton/internal/voxel_components.h>
 #include <CGAL/DF_L1_skeleton/internal/voxel_curve_graph.h>
 #include <CGAL/DF_L1_skeleton/internal/voxel_morphology.h>
 #include <CGAL/DF_L1_skeleton/named_parameters.h>
@@ -80,53 +81,6 @@ struct Thin_parts
                             // that is not occupied, the depth the thin parts have
 };
 
-// Squared distances (voxel units) from every voxel to the nearest voxel of `sites`.
-template <class Traits>
-std::vector<float> squared_distance_to(const Distance_field<Traits>& df, const std::vector<char>& sites)
-{
-  std::vector<float> d(df.size(), EDT_INFINITY);
-  for(std::size_t v = 0; v < df.size(); ++v)
-    if(sites[v])
-      d[v] = 0;
-  squared_euclidean_distance_transform<CGAL::Parallel_if_available_tag>(d, df.dims);
-  return d;
-}
-
-// 26-connected components of the voxels of `in`, each passed to `f` (a vector of indices).
-template <class Traits, class F>
-void for_each_26_component(const Distance_field<Traits>& df, const std::vector<char>& in, const F& f)
-{
-  std::vector<char> seen(df.size(), 0);
-  std::vector<std::size_t> component, stack;
-  for(std::size_t s = 0; s < df.size(); ++s)
-  {
-    if(!in[s] || seen[s])
-      continue;
-    component.clear();
-    stack.assign(1, s);
-    seen[s] = 1;
-    while(!stack.empty())
-    {
-      const std::size_t v = stack.back();
-      stack.pop_back();
-      component.push_back(v);
-      const std::array<int, 3> c = df.coordinates(v);
-      for(int z = (std::max)(0, c[2] - 1); z <= (std::min)(df.dims[2] - 1, c[2] + 1); ++z)
-        for(int y = (std::max)(0, c[1] - 1); y <= (std::min)(df.dims[1] - 1, c[1] + 1); ++y)
-          for(int x = (std::max)(0, c[0] - 1); x <= (std::min)(df.dims[0] - 1, c[0] + 1); ++x)
-          {
-            const std::size_t w = df.index(x, y, z);
-            if(in[w] && !seen[w])
-            {
-              seen[w] = 1;
-              stack.push_back(w);
-            }
-          }
-    }
-    f(component);
-  }
-}
-
 // The thick parts are the union of the balls of radius DT + `margin` centred on the
 // voxels at least two voxels deep (`margin` takes in the boundary shell); it is one
 // distance transform of the power of the balls, min over v of |u - v|^2 - R_v^2 <= 0.
@@ -137,25 +91,26 @@ void for_each_26_component(const Distance_field<Traits>& df, const std::vector<c
 template <class Traits>
 Thin_parts thin_parts(const Distance_field<Traits>& df, double margin, double reach)
 {
+  typedef CGAL::Parallel_if_available_tag Tag; // the transforms do not depend on the threads
   const std::size_t n = df.size();
   std::vector<float> power(n, EDT_INFINITY);
   for(std::size_t v = 0; v < n; ++v)
     if(df.values[v] >= 2)
       power[v] = -float((df.values[v] + margin) * (df.values[v] + margin));
-  squared_euclidean_distance_transform<CGAL::Parallel_if_available_tag>(power, df.dims);
-  std::vector<char> thick(n, 0), occupied(n, 0), outside(n, 0);
+  squared_euclidean_distance_transform<Tag>(power, df.dims);
+  std::vector<char> thick(n, 0), occupied(n, 0);
   for(std::size_t v = 0; v < n; ++v)
   {
     thick[v] = power[v] <= 0;
-    occupied[v] = df.labels[v] == Voxel_label::INTERIOR || df.labels[v] == Voxel_label::BOUNDARY;
-    outside[v] = occupied[v] && !thick[v];
+    occupied[v] = Voxel_grid<Traits>::is_occupied(df.labels[v]);
   }
   Thin_parts result;
   result.voxels.assign(n, 0);
   result.solid.assign(n, 0);
-  const std::vector<float> beyond = squared_distance_to(df, thick);
+  const std::vector<float> beyond = squared_distance_to_sites<Tag>(df.dims, [&](std::size_t v) { return thick[v]; });
   bool any = false;
-  for_each_26_component(df, outside, [&](const std::vector<std::size_t>& component) {
+  for_each_26_component(df, [&](std::size_t v) { return occupied[v] && !thick[v]; },
+                        [&](const std::vector<std::size_t>& component) {
     const bool far = std::any_of(component.begin(), component.end(),
                                  [&](std::size_t v) { return beyond[v] >= reach * reach; });
     const bool attached = std::any_of(component.begin(), component.end(), [&](std::size_t v) { return beyond[v] <= 3; });
@@ -167,13 +122,10 @@ Thin_parts thin_parts(const Distance_field<Traits>& df, double margin, double re
     return result;
   // The occupied voxels within margin + 1 of a thin part join it to the thick solid
   // across the shell that the balls cover.
-  const std::vector<float> near = squared_distance_to(df, result.voxels);
+  const std::vector<float> near = squared_distance_to_sites<Tag>(df.dims, [&](std::size_t v) { return result.voxels[v]; });
   for(std::size_t v = 0; v < n; ++v)
-  {
     result.solid[v] = occupied[v] && near[v] <= (margin + 1) * (margin + 1);
-    outside[v] = !occupied[v];
-  }
-  result.depth = squared_distance_to(df, outside);
+  result.depth = squared_distance_to_sites<Tag>(df.dims, [&](std::size_t v) { return !occupied[v]; });
   for(float& d : result.depth)
     d = std::sqrt(d);
   return result;
@@ -466,7 +418,7 @@ Initial_skeleton<Traits> extract_initial_skeleton(const Distance_field<Traits>& 
     const double thin_radius = with_thin_parts && thin.solid[v] ? (thin.depth[v] - 0.5) * voxel : 0.0;
     result.graph[d].radius = (std::max)(CGAL::to_double(field.distance(v)), thin_radius);
   }
-  internal::prune_spurs(result.graph, spur_ratio, CGAL::to_double(field.voxel_size));
+  internal::prune_spurs(result.graph, spur_ratio, voxel);
   return result;
 }
 

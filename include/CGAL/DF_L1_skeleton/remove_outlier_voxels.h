@@ -8,6 +8,7 @@
 
 #include <CGAL/DF_L1_skeleton/Voxel_grid.h>
 #include <CGAL/DF_L1_skeleton/errors.h>
+#include <CGAL/DF_L1_skeleton/internal/voxel_components.h>
 #include <CGAL/DF_L1_skeleton/named_parameters.h>
 
 #include <CGAL/Named_function_parameters.h>
@@ -62,22 +63,12 @@ Voxel_grid<Traits> remove_outlier_voxels(const Voxel_grid<Traits>& grid,
 
   Voxel_grid<Traits> result = grid;
   Outlier_voxel_statistics stats;
-  std::vector<char> visited(grid.size(), 0);
-  std::vector<std::size_t> component, stack;
-  for(std::size_t seed = 0; seed < grid.size(); ++seed)
-  {
-    if(visited[seed] || !Voxel_grid<Traits>::is_occupied(grid.labels[seed]))
-      continue;
-    component.clear();
-    stack.assign(1, seed);
-    visited[seed] = 1;
+  internal::for_each_26_component(grid, [&](std::size_t v) { return Voxel_grid<Traits>::is_occupied(grid.labels[v]); },
+                                  [&](const std::vector<std::size_t>& component) {
     bool has_interior = false;
-    std::array<int, 3> lo = grid.coordinates(seed), hi = lo;
-    while(!stack.empty())
+    std::array<int, 3> lo = grid.coordinates(component.front()), hi = lo;
+    for(std::size_t v : component)
     {
-      const std::size_t v = stack.back();
-      stack.pop_back();
-      component.push_back(v);
       has_interior = has_interior || grid.labels[v] == Voxel_label::INTERIOR;
       const std::array<int, 3> c = grid.coordinates(v);
       for(int a = 0; a < 3; ++a)
@@ -85,32 +76,18 @@ Voxel_grid<Traits> remove_outlier_voxels(const Voxel_grid<Traits>& grid,
         lo[a] = (std::min)(lo[a], c[a]);
         hi[a] = (std::max)(hi[a], c[a]);
       }
-      for(int dk = -1; dk <= 1; ++dk)
-        for(int dj = -1; dj <= 1; ++dj)
-          for(int di = -1; di <= 1; ++di)
-          {
-            const int i = c[0] + di, j = c[1] + dj, k = c[2] + dk;
-            if(!grid.contains(i, j, k))
-              continue;
-            const std::size_t w = grid.index(i, j, k);
-            if(!visited[w] && Voxel_grid<Traits>::is_occupied(grid.labels[w]))
-            {
-              visited[w] = 1;
-              stack.push_back(w);
-            }
-          }
     }
     const int extent = (std::max)({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]}) + 1;
     if(has_interior || extent > max_extent)
     {
       ++stats.components_kept;
-      continue;
+      return;
     }
     ++stats.components_removed;
     stats.voxels_removed += component.size();
     for(std::size_t v : component)
       result.labels[v] = Voxel_label::OUTLIER;
-  }
+  });
   if(statistics != nullptr)
     *statistics = stats;
   return result;

@@ -12,6 +12,7 @@
 #include <CGAL/DF_L1_skeleton/internal/parity_vote.h>
 #include <CGAL/DF_L1_skeleton/internal/point_range.h>
 #include <CGAL/DF_L1_skeleton/internal/uniform_grid.h>
+#include <CGAL/DF_L1_skeleton/internal/voxel_components.h>
 #include <CGAL/DF_L1_skeleton/named_parameters.h>
 
 #include <CGAL/Named_function_parameters.h>
@@ -212,18 +213,6 @@ inline double median_kth_neighbour_distance(const std::vector<std::array<double,
   return kth[kth.size() / 2];
 }
 
-template <class Traits, class F>
-void for_each_face_neighbour(const Grid_geometry<Traits>& g, std::size_t v, const F& f)
-{
-  const std::array<int, 3> c = g.coordinates(v);
-  for(int n = 0; n < 6; ++n)
-  {
-    const int i = c[0] + (n == 0) - (n == 1), j = c[1] + (n == 2) - (n == 3), k = c[2] + (n == 4) - (n == 5);
-    if(g.contains(i, j, k))
-      f(g.index(i, j, k));
-  }
-}
-
 // Marks every voxel that a 6-connected walk from the marked voxels reaches through
 // voxels where `can_enter` holds.
 template <class Traits, class CanEnter>
@@ -260,37 +249,6 @@ std::vector<char> ball_centres(const Grid_geometry<Traits>& g, const std::vector
   return centre;
 }
 
-// 6-connected regions of the voxels where `in_set` holds, each passed to `f` (a vector
-// of indices).
-template <class Traits, class InSet, class F>
-void for_each_region(const Grid_geometry<Traits>& g, const InSet& in_set, const F& f)
-{
-  std::vector<char> seen(g.size(), 0);
-  std::vector<std::size_t> region, stack;
-  for(std::size_t v = 0; v < g.size(); ++v)
-  {
-    if(seen[v] || !in_set(v))
-      continue;
-    region.clear();
-    seen[v] = 1;
-    stack.push_back(v);
-    while(!stack.empty())
-    {
-      const std::size_t u = stack.back();
-      stack.pop_back();
-      region.push_back(u);
-      for_each_face_neighbour(g, u, [&](std::size_t w) {
-        if(!seen[w] && in_set(w))
-        {
-          seen[w] = 1;
-          stack.push_back(w);
-        }
-      });
-    }
-    f(region);
-  }
-}
-
 // Votes (of 26) for "inside", averaged over a voxel's 5x5x5 box. A majority (14 or
 // more) starts an inside region; flood-exterior voxels joined to one keep growing it down
 // to 11 (hysteresis).
@@ -306,10 +264,7 @@ std::vector<char> voted_interior(const Grid_geometry<Traits>& g, const std::vect
 {
   const std::uint8_t B = std::uint8_t(Voxel_label::BOUNDARY), E = std::uint8_t(Voxel_label::EXTERIOR);
   const std::size_t n = labels.size();
-  std::vector<float> d(n);
-  for(std::size_t v = 0; v < n; ++v)
-    d[v] = labels[v] == B ? 0.f : EDT_INFINITY;
-  squared_euclidean_distance_transform<ConcurrencyTag>(d, g.dims);
+  const std::vector<float> d = squared_distance_to_sites<ConcurrencyTag>(g.dims, [&](std::size_t v) { return labels[v] == B; });
   std::vector<char> shell(n);
   for(std::size_t v = 0; v < n; ++v)
     shell[v] = d[v] <= float(band * band) + 1e-3f;
@@ -352,14 +307,9 @@ std::vector<char> voted_interior(const Grid_geometry<Traits>& g, const std::vect
   // Where the flood leaked into a part, it also left a film of exterior voxels on the
   // shell between the inside and the points; a shell voxel nearer to the inside than to
   // any voxel off the shell outside it belongs to the part.
-  std::vector<float> to_inside(n), to_outside(n);
-  for(std::size_t v = 0; v < n; ++v)
-  {
-    to_inside[v] = inside[v] ? 0.f : EDT_INFINITY;
-    to_outside[v] = !inside[v] && !shell[v] ? 0.f : EDT_INFINITY;
-  }
-  squared_euclidean_distance_transform<ConcurrencyTag>(to_inside, g.dims);
-  squared_euclidean_distance_transform<ConcurrencyTag>(to_outside, g.dims);
+  const std::vector<float> to_inside = squared_distance_to_sites<ConcurrencyTag>(g.dims, [&](std::size_t v) { return inside[v]; });
+  const std::vector<float> to_outside =
+    squared_distance_to_sites<ConcurrencyTag>(g.dims, [&](std::size_t v) { return !inside[v] && !shell[v]; });
   for(std::size_t v = 0; v < n; ++v)
     if(shell[v] && labels[v] == E && to_inside[v] < to_outside[v])
       inside[v] = 1;
@@ -407,10 +357,8 @@ void sweep_exterior_with_balls(const Grid_geometry<Traits>& g, std::vector<std::
                      I = std::uint8_t(Voxel_label::INTERIOR);
   const std::size_t n = labels.size();
   const float L2 = float(large * large), S2 = float(small * small);
-  std::vector<float> dist(n);
-  for(std::size_t v = 0; v < n; ++v)
-    dist[v] = labels[v] == B || inside[v] ? 0.f : EDT_INFINITY;
-  squared_euclidean_distance_transform<ConcurrencyTag>(dist, g.dims);
+  std::vector<float> dist =
+    squared_distance_to_sites<ConcurrencyTag>(g.dims, [&](std::size_t v) { return labels[v] == B || inside[v]; });
   std::vector<char> large_centre = ball_centres(g, labels, dist, L2);
   std::vector<char> small_centre = ball_centres(g, labels, dist, S2);
 

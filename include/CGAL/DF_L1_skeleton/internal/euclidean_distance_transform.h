@@ -120,6 +120,18 @@ void squared_euclidean_distance_transform(std::vector<float>& grid, const std::a
   }
 }
 
+// Squared Euclidean distances (voxel units) from every voxel of a grid of `dims` to the
+// nearest voxel where `is_site(v)` holds; EDT_INFINITY everywhere when there is none.
+template <class ConcurrencyTag, class IsSite>
+std::vector<float> squared_distance_to_sites(const std::array<int, 3>& dims, const IsSite& is_site)
+{
+  std::vector<float> d(std::size_t(dims[0]) * dims[1] * dims[2]);
+  for(std::size_t v = 0; v < d.size(); ++v)
+    d[v] = is_site(v) ? 0.f : EDT_INFINITY;
+  squared_euclidean_distance_transform<ConcurrencyTag>(d, dims);
+  return d;
+}
+
 } // namespace internal
 } // namespace DF_L1
 } // namespace CGAL
