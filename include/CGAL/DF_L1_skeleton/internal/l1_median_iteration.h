@@ -15,6 +15,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <deque>
 #include <limits>
 #include <vector>
 
@@ -143,9 +144,10 @@ inline Ball_sums ball_sums(const Uniform_grid& grid, const std::vector<Vec3>& po
 
 // The points gathered by cubic cells of side `cell`: the centroid of each non-empty cell
 // and its number of points, in the order of the cells (deterministic). The data term of
-// Eq. 8 sums over hundreds of points per ball; with cells an eighth of the support
-// radius, a centroid stands for several of them and the weights theta / r barely change
-// across a cell (measured on our 72 test cases: the same skeletons).
+// Eq. 8 sums over hundreds of points per ball; with cells a quarter to an eighth of the
+// support radius, a centroid stands for several of them and the errors of the weights
+// theta / r across a cell largely cancel around the centroid (measured on our 72 test
+// cases: the same topology and centring).
 struct Aggregated_points
 {
   std::vector<Vec3> centroid;
@@ -206,13 +208,15 @@ inline Aggregated_points group_by_cell(const std::vector<std::array<long long, 3
 }
 
 // The input points gathered at cell sizes doubling from `finest`, each with a grid for
-// ball queries, so that a sample of support radius h sums over cells of h/16 to h/8.
+// ball queries, so that a sample of support radius h sums over cells of h/8 to h/4.
 // The cells nest (one origin, sizes doubling), so each level groups the centroids of
-// the level below instead of all the points again.
+// the level below instead of all the points again. The levels are built once per
+// contraction and extended when the support radii grow (rebuilding them for every
+// stage cost as much as a sixth of the contraction and did not run in parallel).
 class Gathered_input
 {
 public:
-  Gathered_input(const std::vector<Vec3>& points, double finest, double largest_radius)
+  Gathered_input(const std::vector<Vec3>& points, double finest)
   {
     if(points.empty())
       return;
@@ -224,21 +228,22 @@ public:
     for(std::size_t i = 0; i < points.size(); ++i)
       for(int a = 0; a < 3; ++a)
         cells[i][a] = (long long)(std::floor((points[i][a] - lo[a]) / finest));
-    levels_.push_back(group_by_cell(cells, points, nullptr));
-    cells_.push_back(finest);
-    while(8 * cells_.back() < largest_radius && levels_.back().centroid.size() > 1)
+    add_level(group_by_cell(cells, points, nullptr), finest);
+  }
+
+  // Adds coarser levels until a ball of radius `radius` finds its cells (not thread safe:
+  // call it between the parallel loops).
+  void cover_radius(double radius)
+  {
+    while(!levels_.empty() && 4 * cells_.back() < radius && levels_.back().centroid.size() > 1)
     {
       const Aggregated_points& below = levels_.back();
       std::vector<std::array<long long, 3>> parent(below.cell.size());
       for(std::size_t i = 0; i < parent.size(); ++i)
         for(int a = 0; a < 3; ++a)
           parent[i][a] = below.cell[i][a] / 2; // non-negative: floor
-      Aggregated_points above = group_by_cell(parent, below.centroid, &below.multiplicity);
-      levels_.push_back(std::move(above));
-      cells_.push_back(2 * cells_.back());
+      add_level(group_by_cell(parent, below.centroid, &below.multiplicity), 2 * cells_.back());
     }
-    for(std::size_t k = 0; k < levels_.size(); ++k) // after the vectors stopped moving
-      grids_.emplace_back(levels_[k].centroid, 4 * cells_[k]);
   }
 
   Ball_sums sums(const Vec3& x, double h) const
@@ -246,15 +251,23 @@ public:
     if(levels_.empty())
       return Ball_sums();
     std::size_t k = 0;
-    while(k + 1 < levels_.size() && 8 * cells_[k + 1] <= h)
+    while(k + 1 < levels_.size() && 4 * cells_[k + 1] <= h)
       ++k;
     return ball_sums(grids_[k], levels_[k].centroid, x, h, 1, std::size_t(-1), &levels_[k].multiplicity);
   }
 
 private:
-  std::vector<Aggregated_points> levels_;
+  void add_level(Aggregated_points&& level, double cell)
+  {
+    levels_.push_back(std::move(level));
+    cells_.push_back(cell);
+    grids_.emplace_back(levels_.back().centroid, 4 * cell);
+  }
+
+  // deques: a grid refers to its level's centroids, which must not move when levels are added
+  std::deque<Aggregated_points> levels_;
   std::vector<double> cells_;
-  std::vector<Uniform_grid> grids_;
+  std::deque<Uniform_grid> grids_;
 };
 
 // One fixed-point iteration of Eq. 8 for every free sample, all from the previous
