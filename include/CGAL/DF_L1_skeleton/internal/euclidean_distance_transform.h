@@ -10,6 +10,7 @@
 #include <tbb/parallel_for.h>
 #endif
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <limits>
@@ -26,6 +27,9 @@ constexpr float EDT_INFINITY = 1e20f;
 
 // Lower envelope of the parabolas y = f[q] + (x - q)^2 (Felzenszwalb & Huttenlocher
 // 2012): the exact 1D squared distance transform in linear time. `v` and `z` are scratch.
+// The intersection s of two parabolas is compared with z[k] by cross-multiplication
+// (the denominator is positive), so that a division is made only for the parabola kept:
+// the divisions were most of the cost of the transform.
 inline void squared_distance_transform_1d(const float* f, float* d, int n, std::vector<int>& v,
                                           std::vector<double>& z)
 {
@@ -36,18 +40,20 @@ inline void squared_distance_transform_1d(const float* f, float* d, int n, std::
   {
     if(f[q] >= EDT_INFINITY)
       continue;
-    double s = 0;
+    const double fq = double(f[q]) + double(q) * q;
+    double numerator = 0, denominator = 1;
     while(k >= 0)
     {
       const int p = v[k];
-      s = ((double(f[q]) + double(q) * q) - (double(f[p]) + double(p) * p)) / (2.0 * (q - p));
-      if(s > z[k])
+      numerator = fq - (double(f[p]) + double(p) * p);
+      denominator = 2.0 * (q - p);
+      if(numerator > z[k] * denominator)
         break;
       --k;
     }
     ++k;
     v[k] = q;
-    z[k] = k == 0 ? -std::numeric_limits<double>::infinity() : s;
+    z[k] = k == 0 ? -std::numeric_limits<double>::infinity() : numerator / denominator;
     z[k + 1] = std::numeric_limits<double>::infinity();
   }
   if(k < 0)
@@ -63,6 +69,27 @@ inline void squared_distance_transform_1d(const float* f, float* d, int n, std::
       ++j;
     const double dq = q - v[j];
     d[q] = float(dq * dq + f[v[j]]);
+  }
+}
+
+// The same transform when every f[q] is 0 (a site) or EDT_INFINITY, as in the first pass
+// from a set of sites: the squared distance to the nearest site, in two scans.
+inline void squared_distance_to_sites_1d(const float* f, float* d, int n)
+{
+  int last = -1;
+  for(int q = 0; q < n; ++q)
+  {
+    if(f[q] == 0)
+      last = q;
+    d[q] = last < 0 ? EDT_INFINITY : float(q - last) * float(q - last);
+  }
+  last = -1;
+  for(int q = n - 1; q >= 0; --q)
+  {
+    if(f[q] == 0)
+      last = q;
+    if(last >= 0)
+      d[q] = (std::min)(d[q], float(last - q) * float(last - q));
   }
 }
 
@@ -103,7 +130,9 @@ void squared_euclidean_distance_transform(std::vector<float>& grid, const std::a
   {
     const std::size_t n = dims[axis];
     const std::size_t stride = strides[axis];
-    const int a1 = (axis + 1) % 3, a2 = (axis + 2) % 3;
+    // Consecutive rows along the fastest other axis: the strided reads and writes of the
+    // passes along y and z then share cache lines between neighbouring rows.
+    const int a1 = axis == 0 ? 1 : 0, a2 = 3 - axis - a1;
     const std::size_t n1 = dims[a1];
     for_each_row<ConcurrencyTag>(n1 * dims[a2], [&](std::size_t row, std::vector<int>& v,
                                                     std::vector<double>& z, std::vector<float>& in,
@@ -113,7 +142,10 @@ void squared_euclidean_distance_transform(std::vector<float>& grid, const std::a
       out.resize(n);
       for(std::size_t q = 0; q < n; ++q)
         in[q] = grid[start + q * stride];
-      squared_distance_transform_1d(in.data(), out.data(), int(n), v, z);
+      if(std::all_of(in.begin(), in.end(), [](float x) { return x == 0 || x >= EDT_INFINITY; }))
+        squared_distance_to_sites_1d(in.data(), out.data(), int(n));
+      else
+        squared_distance_transform_1d(in.data(), out.data(), int(n), v, z);
       for(std::size_t q = 0; q < n; ++q)
         grid[start + q * stride] = out[q];
     });
