@@ -455,9 +455,13 @@ inline void write_report(const std::vector<Record>& all, const std::string& out_
     for(auto& p : by_points)
       if(p.second.count(1) && p.second.count(2))
       {
-        const double speedup = p.second[1].number("t.contraction") / p.second[2].number("t.contraction");
-        md << "- " << fixed(p.first, 0) << " points: contraction " << fixed(speedup, 2) << "x faster on 2 threads, whole"
-           << " pipeline " << fixed(p.second[1].number("t.total") / p.second[2].number("t.total"), 2) << "x.\n";
+        // the projection step alone when the results have it (older results: the contraction)
+        const char* key = p.second[1].has("projection_seconds") && p.second[2].has("projection_seconds") ? "projection_seconds" : "t.contraction";
+        const double speedup = p.second[1].number(key) / p.second[2].number(key);
+        md << "- " << fixed(p.first, 0) << " points: projection step (the fixed-point iterations) "
+           << fixed(speedup, 2) << "x faster on 2 threads, contraction stage "
+           << fixed(p.second[1].number("t.contraction") / p.second[2].number("t.contraction"), 2) << "x, whole pipeline "
+           << fixed(p.second[1].number("t.total") / p.second[2].number("t.total"), 2) << "x.\n";
         worst = (std::min)(worst, speedup);
       }
     md << "\n";

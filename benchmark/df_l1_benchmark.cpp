@@ -186,6 +186,7 @@ Record run_ours(const Options& o)
   const std::string output = scratch_path("skeleton.obj");
   Stage_clock clock;
   Record r;
+  std::vector<double> projection; // seconds of the projection step (inside the contraction), per run
   for(int run = 0; run < o.runs; ++run)
   {
     clock.next_run();
@@ -207,6 +208,9 @@ Record run_ours(const Options& o)
     stage("distance", &Skeletonization::compute_distance_field);
     stage("initial", &Skeletonization::extract_initial_skeleton);
     stage("contraction", &Skeletonization::contract);
+    projection.push_back(0);
+    for(const auto& st : s.contracted_samples().stages)
+      projection.back() += st.projection_seconds;
     stage("skeleton", &Skeletonization::convert_to_skeleton);
     clock.time("write", [&] {
       DF::write_skeleton(output, s.skeleton());
@@ -226,6 +230,7 @@ Record run_ours(const Options& o)
   }
   std::remove(output.c_str());
   r.set("t.refinement", clock.median("contraction") + clock.median("skeleton"));
+  r.set("projection_seconds", DF_L1_bench::spread(projection).median);
   clock.write(r);
   return r;
 }
@@ -238,6 +243,7 @@ Record run_poisson_mcf(const Options& o)
   const std::string output = scratch_path("mcf.obj");
   Stage_clock clock;
   Record r;
+  std::vector<double> projection; // seconds of the projection step (inside the contraction), per run
   for(int run = 0; run < o.runs; ++run)
   {
     clock.next_run();

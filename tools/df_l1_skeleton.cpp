@@ -525,7 +525,8 @@ int run(const Settings& s)
           .number("mean_radius", st.mean_radius)
           .number("max_radius", st.max_radius)
           .number("free_samples", double(st.free_samples))
-          .number("branch_samples", double(st.branch_samples));
+          .number("branch_samples", double(st.branch_samples))
+          .number("projection_seconds", st.projection_seconds);
         stages += (i ? ",\n      " : "\n      ") + o.inline_str();
       }
       stages += contracted->stages.empty() ? "]" : "\n    ]";

@@ -90,6 +90,12 @@ TEST_CASE("benchmark report: targets checked against the figures, plots written"
     r.set("points", n);
     records.push_back(r);
   }
+  for(double t : {1.0, 2.0}) // the thread series: the projection step scales, the whole contraction less
+  {
+    Record r = timed("threads/" + std::to_string(int(t)), "df_l1", t == 1 ? 2.0 : 1.5);
+    r.set("threads", t).set("t.contraction", t == 1 ? 1.0 : 0.7).set("projection_seconds", t == 1 ? 0.9 : 0.5);
+    records.push_back(r);
+  }
   DF_L1_bench::Report_options options;
   options.command = "scripts/bench.sh";
   DF_L1_bench::write_report(records, dir.string(), options);
@@ -103,6 +109,9 @@ TEST_CASE("benchmark report: targets checked against the figures, plots written"
   CHECK(report.find("**1.20** from 100k points on") != std::string::npos);
   CHECK(report.find("| 1000000 points < 10 s | 15.8 s | **not met** |") != std::string::npos);
   CHECK(report.find("N^1.20 | **not met** |") != std::string::npos);
+  CHECK(report.find("projection step (the fixed-point iterations) 1.80x faster on 2 threads, contraction stage 1.43x,"
+                     " whole pipeline 1.33x") != std::string::npos);
+  CHECK(report.find("| projection step >= 1.7x faster on 2 threads than on 1 | 1.80x | met |") != std::string::npos);
   CHECK(std::filesystem::file_size(dir / "scaling_points.svg") > 500);
   std::filesystem::remove_all(dir);
 }

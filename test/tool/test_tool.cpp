@@ -266,7 +266,7 @@ TEST_CASE("tool: a valid input gives the skeleton, the preview and a complete re
                          "\"thinning_parameters\"", "\"voxelization\"", "\"distance\"", "\"initial\"",
                          "\"input_points\": 4000", "\"added_points\"", "\"outlier_points\"", "\"interior_voxels\"",
                          "\"skeleton_vertices\"", "\"skeleton_edges\"", "\"skeleton_components\"",
-                         "\"skeleton_cycles\"", "\"peak_memory_mib\""})
+                         "\"skeleton_cycles\"", "\"peak_memory_mib\"", "\"projection_seconds\""})
   {
     INFO(key);
     CHECK(json.str().find(key) != std::string::npos);

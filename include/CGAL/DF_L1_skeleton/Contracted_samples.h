@@ -36,6 +36,8 @@ struct Contraction_stage
   double max_radius = 0;          ///< largest h of a free sample
   std::size_t free_samples = 0;   ///< samples free at the start of the stage
   std::size_t branch_samples = 0; ///< branch points at the end of the stage
+  double projection_seconds = 0;  ///< wall seconds of this stage's fixed-point iterations (Eq. 8), the parallel
+                                  ///< projection step; the only field that varies from run to run
 };
 
 /// \ingroup PkgDFL1SkeletonRef

@@ -24,6 +24,7 @@
 #include <CGAL/tags.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -234,6 +235,7 @@ Contracted_samples<Traits> contract_samples(const std::vector<typename Traits::P
       const std::vector<Vec3> previous = s.x;
       const Uniform_grid sample_grid(previous, cell);
       std::vector<double> moved(free.size(), 0);
+      const auto start = std::chrono::steady_clock::now();
       for_each_index<ConcurrencyTag>(free.size(), [&](std::size_t f) {
         const std::size_t i = free[f];
         const Vec3 next = step(previous, sample_grid, i, s.radius[i]);
@@ -242,6 +244,7 @@ Contracted_samples<Traits> contract_samples(const std::vector<typename Traits::P
         s.x[i] = next;
         moved[f] = distance(next, previous[i]);
       }, 16);
+      stats.projection_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       ++stats.iterations;
       record();
       double mean = 0;
