@@ -214,14 +214,25 @@ inline double median_kth_neighbour_distance(const std::vector<std::array<double,
 }
 
 // Marks every voxel that a 6-connected walk from the marked voxels reaches through
-// voxels where `can_enter` holds.
+// voxels where `can_enter` holds. The walk starts from the enterable voxels next to a
+// marked one: the marked voxels are often most of the grid (the exterior), and pushing
+// them all made the walk cost several passes over it.
 template <class Traits, class CanEnter>
 void grow_face_connected(const Grid_geometry<Traits>& g, std::vector<char>& marked, const CanEnter& can_enter)
 {
   std::vector<std::size_t> stack;
   for(std::size_t v = 0; v < marked.size(); ++v)
-    if(marked[v])
+  {
+    if(marked[v] || !can_enter(v))
+      continue;
+    bool next_to_marked = false;
+    for_each_face_neighbour(g, v, [&](std::size_t w) { next_to_marked = next_to_marked || marked[w]; });
+    if(next_to_marked)
+    {
+      marked[v] = 1;
       stack.push_back(v);
+    }
+  }
   while(!stack.empty())
   {
     const std::size_t v = stack.back();
@@ -364,14 +375,25 @@ void sweep_exterior_with_balls(const Grid_geometry<Traits>& g, std::vector<std::
 
   // Face-step depth of the small ball's centres beyond the large ball's centres and the
   // exterior (BFS), and the deepest centre of each 6-connected region of them.
+  // The search starts from the step-1 centres: they are few, while the step-0 ones (the
+  // exterior) are most of the grid.
   std::vector<int> steps(n, -1);
-  std::vector<std::size_t> queue;
   for(std::size_t v = 0; v < n; ++v)
     if(small_centre[v] && (labels[v] == E || large_centre[v]))
-    {
       steps[v] = 0;
+  std::vector<std::size_t> queue;
+  for(std::size_t v = 0; v < n; ++v)
+  {
+    if(!small_centre[v] || steps[v] == 0)
+      continue;
+    bool next_to_start = false;
+    for_each_face_neighbour(g, v, [&](std::size_t w) { next_to_start = next_to_start || steps[w] == 0; });
+    if(next_to_start)
+    {
+      steps[v] = 1;
       queue.push_back(v);
     }
+  }
   for(std::size_t head = 0; head < queue.size(); ++head)
   {
     const std::size_t v = queue[head];
