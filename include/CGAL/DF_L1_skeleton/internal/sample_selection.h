@@ -47,11 +47,15 @@ inline std::vector<std::size_t> select_samples(const std::vector<Vec3>& points, 
       hi[a] = (std::max)(hi[a], p[a]);
     }
   const double extent = (std::max)({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]});
+  // The number of occupied cells, or m + 1 as soon as it exceeds m: the search only asks
+  // whether it does, and a fine grid of a large cloud would otherwise fill a map of
+  // millions of cells (most of the time of the pick at a million points).
   const auto occupied = [&](double cell) {
     std::unordered_map<std::uint64_t, std::size_t> cells;
-    cells.reserve(2 * m);
+    cells.reserve(2 * m + 2);
     for(const Vec3& p : points)
-      cells.emplace(cell_key(p, lo, cell), 0);
+      if(cells.emplace(cell_key(p, lo, cell), 0).second && cells.size() > m)
+        break;
     return cells.size();
   };
   // Cell sizes bracketing m occupied cells: many cells at extent / 2^20, one at 2 extent.
