@@ -202,7 +202,7 @@ std::vector<df_l1_tool::Option> option_table(Settings& s, bool& help, bool& vers
          throw Usage_error("--denoise must be auto, on or off, got '" + v + "'");
        s.denoise = v;
      }},
-    {"denoising-neighbors", "K", "24", "neighbours of the local quadrics of the noise estimate and the smoothing, in [6, 256]",
+    {"denoising-neighbors", "K", "24", "neighbours of the local quadrics of the smoothing (the noise estimate uses 16), in [6, 256]",
      [&](const std::string& v) { s.denoising_neighbors = int(parse_integer("denoising-neighbors", v, 6, 256)); }},
     {"no-upsampling", "", "upsampling on", "do not upsample sparse regions",
      [&](const std::string&) { s.upsampling = false; }},
