@@ -107,6 +107,13 @@ Thin_parts thin_parts(const Distance_field<Traits>& df, double margin, double re
   Thin_parts result;
   result.voxels.assign(n, 0);
   result.solid.assign(n, 0);
+  // The balls often cover every occupied voxel (smooth shapes): no thin part, and no
+  // need for the transforms below.
+  bool outside_balls = false;
+  for(std::size_t v = 0; v < n && !outside_balls; ++v)
+    outside_balls = occupied[v] && !thick[v];
+  if(!outside_balls)
+    return result;
   const std::vector<float> beyond = squared_distance_to_sites<Tag>(df.dims, [&](std::size_t v) { return thick[v]; });
   bool any = false;
   for_each_26_component(df, [&](std::size_t v) { return occupied[v] && !thick[v]; },
