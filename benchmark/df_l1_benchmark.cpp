@@ -243,7 +243,6 @@ Record run_poisson_mcf(const Options& o)
   const std::string output = scratch_path("mcf.obj");
   Stage_clock clock;
   Record r;
-  std::vector<double> projection; // seconds of the projection step (inside the contraction), per run
   for(int run = 0; run < o.runs; ++run)
   {
     clock.next_run();
