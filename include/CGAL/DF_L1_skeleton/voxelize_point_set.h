@@ -222,17 +222,11 @@ void grow_face_connected(const Grid_geometry<Traits>& g, std::vector<char>& mark
 {
   std::vector<std::size_t> stack;
   for(std::size_t v = 0; v < marked.size(); ++v)
-  {
-    if(marked[v] || !can_enter(v))
-      continue;
-    bool next_to_marked = false;
-    for_each_face_neighbour(g, v, [&](std::size_t w) { next_to_marked = next_to_marked || marked[w]; });
-    if(next_to_marked)
+    if(!marked[v] && can_enter(v) && has_face_neighbour(g, v, [&](std::size_t w) { return marked[w] != 0; }))
     {
       marked[v] = 1;
       stack.push_back(v);
     }
-  }
   while(!stack.empty())
   {
     const std::size_t v = stack.back();
@@ -383,17 +377,11 @@ void sweep_exterior_with_balls(const Grid_geometry<Traits>& g, std::vector<std::
       steps[v] = 0;
   std::vector<std::size_t> queue;
   for(std::size_t v = 0; v < n; ++v)
-  {
-    if(!small_centre[v] || steps[v] == 0)
-      continue;
-    bool next_to_start = false;
-    for_each_face_neighbour(g, v, [&](std::size_t w) { next_to_start = next_to_start || steps[w] == 0; });
-    if(next_to_start)
+    if(small_centre[v] && steps[v] != 0 && has_face_neighbour(g, v, [&](std::size_t w) { return steps[w] == 0; }))
     {
       steps[v] = 1;
       queue.push_back(v);
     }
-  }
   for(std::size_t head = 0; head < queue.size(); ++head)
   {
     const std::size_t v = queue[head];

@@ -26,6 +26,15 @@ void for_each_face_neighbour(const Grid_geometry<Traits>& g, std::size_t v, cons
   }
 }
 
+// Whether `pred` holds at one of the 6 face neighbours of voxel v.
+template <class Traits, class Pred>
+bool has_face_neighbour(const Grid_geometry<Traits>& g, std::size_t v, const Pred& pred)
+{
+  bool found = false;
+  for_each_face_neighbour(g, v, [&](std::size_t w) { found = found || pred(w); });
+  return found;
+}
+
 // Calls `f` on the linear index of each of the 26 neighbours of voxel v in the grid.
 template <class Traits, class F>
 void for_each_neighbour_26(const Grid_geometry<Traits>& g, std::size_t v, const F& f)
