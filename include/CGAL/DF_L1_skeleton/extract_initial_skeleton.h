@@ -99,19 +99,18 @@ Thin_parts thin_parts(const Distance_field<Traits>& df, double margin, double re
       power[v] = -float((df.values[v] + margin) * (df.values[v] + margin));
   squared_euclidean_distance_transform<Tag>(power, df.dims);
   std::vector<char> thick(n, 0), occupied(n, 0);
+  bool outside_balls = false;
   for(std::size_t v = 0; v < n; ++v)
   {
     thick[v] = power[v] <= 0;
     occupied[v] = Voxel_grid<Traits>::is_occupied(df.labels[v]);
+    outside_balls = outside_balls || (occupied[v] && !thick[v]);
   }
   Thin_parts result;
   result.voxels.assign(n, 0);
   result.solid.assign(n, 0);
   // The balls often cover every occupied voxel (smooth shapes): no thin part, and no
   // need for the transforms below.
-  bool outside_balls = false;
-  for(std::size_t v = 0; v < n && !outside_balls; ++v)
-    outside_balls = occupied[v] && !thick[v];
   if(!outside_balls)
     return result;
   const std::vector<float> beyond = squared_distance_to_sites<Tag>(df.dims, [&](std::size_t v) { return thick[v]; });
