@@ -79,8 +79,9 @@ public:
   ///        `branch_directionality`, `number_of_iterations`, `contraction_stages` (see `voxelize_point_set()`,
   ///        `denoise_point_set()`, `upsample_sparse_regions()`, `remove_outlier_voxels()`,
   ///        `extract_initial_skeleton()` and `contract_samples()` for their meaning and
-  ///        defaults); the initial skeleton's `thin_parts` is set by the class: on
-  ///        exactly when the cloud was not smoothed (`denoised()`)
+  ///        defaults); the initial skeleton's `thin_parts` and `occupied_depth` are set
+  ///        by the class: `thin_parts` on exactly when the cloud was not smoothed
+  ///        (`denoised()`), `occupied_depth` on exactly when it was
   /// \throws DF_L1::Invalid_input if the range is empty, holds a non-finite coordinate,
   ///         all its points coincide or lie on a plane (within a quarter of a voxel, RMS),
   ///         or a parameter is out of range
@@ -240,7 +241,7 @@ public:
     compute_distance_field();
     initial_ = std::make_unique<Initial_skeleton>(DF_L1::extract_initial_skeleton(
       *field_, parameters::thinning_coefficient(thinning_coefficient_,
-               parameters::spur_length_ratio(spur_length_ratio_, parameters::thin_parts(!denoised_)))));
+               parameters::spur_length_ratio(spur_length_ratio_, parameters::thin_parts(!denoised_, parameters::occupied_depth(denoised_))))));
     DF_L1::assign_points_to_skeleton(points_, outliers_, initial_->graph);
   }
 

@@ -85,6 +85,24 @@ TEST_CASE("final skeleton: 6 shapes x 6 variants stay centred and inside", "[fin
   CHECK(passes == cases);
 }
 
+// The thinnest limbs of the synthetic shapes under 1 % noise: the stick figure's arms,
+// whose smoothed boundary shell leaves them almost no interior (see `occupied_depth`).
+TEST_CASE("final skeleton: the noisy stick figure keeps its arms, centred and inside", "[final][noise]")
+{
+  for(unsigned seed : {2u, 7u})
+  {
+    const Sample sample = sample_of("stick_figure", Variant::noise, seed);
+    CGAL::DF_L1_skeletonization<Kernel> s(sample.points);
+    const Skeleton_quality q =
+      measure_quality(shape_by_name("stick_figure"), s.skeleton(), CGAL::to_double(s.distance_field().voxel_size));
+    INFO("seed " << seed << ": " << describe(shape_by_name("stick_figure"), Variant::noise, q));
+    CHECK(topology_matches(shape_by_name("stick_figure").expected_topology(), q.topology, true));
+    CHECK(q.mean_axis_ratio <= 0.25);
+    CHECK(q.outside_fraction <= 0.01);
+    CHECK(q.axis_coverage >= 0.9);
+  }
+}
+
 TEST_CASE("final skeleton: the free function, the class run at once and stage by stage agree", "[final]")
 {
   const Sample sample = sample_of("y_junction", Variant::outliers);

@@ -149,6 +149,46 @@ TEST_CASE("initial skeleton: noisy capsule, Y-junction and torus keep their topo
     }
 }
 
+// A smoothed noisy cloud keeps a boundary shell several voxels thick: the stick figure's
+// arms have almost no interior voxel two deep, and the distance field alone lost them.
+// The depth in the occupied voxels (which the class turns on for smoothed clouds) keeps
+// the two arms, the two legs and the head.
+TEST_CASE("initial skeleton: depth in the occupied voxels keeps the thin limbs of a noisy cloud", "[initial][noise]")
+{
+  const DF_L1_test::Shape shape = DF_L1_test::shape_by_name("stick_figure");
+  for(unsigned seed : {2u, 7u})
+  {
+    const std::vector<Point_3> points = DF_L1_test::make_sample(shape, Variant::noise, 20000, seed).points;
+    CGAL::DF_L1_skeletonization<Kernel> skeletonization(points);
+    REQUIRE(skeletonization.denoised());
+    const DF::Distance_field<Kernel>& field = skeletonization.distance_field();
+    const DF::Initial_skeleton<Kernel> in_occupied =
+      DF::extract_initial_skeleton(field, CGAL::parameters::occupied_depth(true));
+    const DF::Skeleton_statistics s = DF::skeleton_statistics(in_occupied.graph);
+    INFO(describe("stick_figure", Variant::noise, seed, s) << ", " << s.junctions << " junctions");
+    CHECK(s.components == 1);
+    CHECK(s.cycles == 0);
+    CHECK(std::abs(long(s.end_points) - 5) <= 1);
+    // the shoulders' four-way junction may be two three-way ones a voxel apart
+    CHECK(s.junctions >= 2);
+    CHECK(s.junctions <= 3);
+    // the class uses it for this smoothed cloud
+    CHECK(DF::skeleton_statistics(skeletonization.initial_skeleton().graph).end_points == s.end_points);
+    // every curve vertex lies in an occupied voxel, and its radius is positive
+    for(std::size_t v = 0; v < boost::num_vertices(in_occupied.graph); ++v)
+    {
+      const std::array<int, 3> c = field.locate(in_occupied.graph[v].point);
+      REQUIRE(field.contains(c[0], c[1], c[2]));
+      CHECK(DF::Voxel_grid<Kernel>::is_occupied(field.labels[field.index(c[0], c[1], c[2])]));
+      CHECK(in_occupied.graph[v].radius > 0);
+    }
+    // the distance field alone misses limbs there
+    const DF::Initial_skeleton<Kernel> from_field =
+      DF::extract_initial_skeleton(field, CGAL::parameters::thin_parts(false));
+    CHECK(DF::skeleton_statistics(from_field.graph).end_points < s.end_points);
+  }
+}
+
 TEST_CASE("initial skeleton: the same for 1 and 2 threads", "[initial][determinism]")
 {
   const std::vector<Point_3> points =

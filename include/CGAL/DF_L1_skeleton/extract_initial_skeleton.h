@@ -70,6 +70,18 @@ std::vector<char> shape_volume(const Distance_field<Traits>& df)
   return in;
 }
 
+// The distance (voxels) from every voxel to the nearest voxel that is not occupied
+// (neither boundary nor interior): 0 outside the occupied voxels, 1 in their outer layer.
+template <class Traits>
+std::vector<float> occupied_depth(const Distance_field<Traits>& df)
+{
+  std::vector<float> depth = squared_distance_to_sites<CGAL::Parallel_if_available_tag>(
+    df.dims, [&](std::size_t v) { return !Voxel_grid<Traits>::is_occupied(df.labels[v]); });
+  for(float& d : depth)
+    d = std::sqrt(d);
+  return depth;
+}
+
 // The parts thinner than two voxels (twigs, the lower legs of a scanned animal): they
 // have no skeleton voxel, so without them the curves stop where a limb gets that thin.
 struct Thin_parts
@@ -131,9 +143,7 @@ Thin_parts thin_parts(const Distance_field<Traits>& df, double margin, double re
   const std::vector<float> near = squared_distance_to_sites<Tag>(df.dims, [&](std::size_t v) { return result.voxels[v]; });
   for(std::size_t v = 0; v < n; ++v)
     result.solid[v] = occupied[v] && near[v] <= (margin + 1) * (margin + 1);
-  result.depth = squared_distance_to_sites<Tag>(df.dims, [&](std::size_t v) { return !occupied[v]; });
-  for(float& d : result.depth)
-    d = std::sqrt(d);
+  result.depth = occupied_depth(df);
   return result;
 }
 
@@ -303,7 +313,18 @@ void prune_spurs(Skeleton_graph<Traits>& g, double ratio, double voxel_size)
 ///   change (their thinnest tubes are 3 voxels in radius or more);
 /// - terminal branches shorter than `spur_length_ratio` times the local radius at
 ///   their junction (plus one voxel) are pruned; in a thin part, the local radius is the
-///   distance to the nearest unoccupied voxel less half a voxel.
+///   distance to the nearest unoccupied voxel less half a voxel;
+/// - with `occupied_depth` (our addition, for smoothed noisy clouds), the depth that the
+///   ridge test, the thinning, the end test and the radii read is not the distance field
+///   but the distance to the nearest unoccupied voxel less one, and the solid also takes
+///   the occupied voxels more than one voxel deep. Noise leaves a boundary shell several
+///   voxels thick even after smoothing, so a thin limb has little or no interior two
+///   voxels deep while its occupied voxels still span it; where the shell is one voxel
+///   thick the two depths about agree. Measured on the 12 synthetic shapes with 1 %
+///   noise (20,000 points, seed 7): the designed topology in 12 cases instead of 11 (the
+///   stick figure kept its arms), mean distance to the axis 0.069 of the local radius
+///   instead of 0.094, axis coverage 0.989 instead of 0.957; the other variants are not
+///   smoothed and do not change.
 ///
 /// \tparam Traits a model of `Kernel`
 /// \param field the distance field returned by `compute_distance_field()`
@@ -320,8 +341,13 @@ void prune_spurs(Skeleton_graph<Traits>& g, double ratio, double voxel_size)
 ///   \cgalParamNBegin{thin_parts}
 ///     \cgalParamDescription{whether the curves run into the parts thinner than two voxels (a Boolean);
 ///       `DF_L1_skeletonization` turns it off for clouds it smoothed, whose ragged boundary shell cannot
-///       be told from a thin part}
+///       be told from a thin part; moot with `occupied_depth`}
 ///     \cgalParamDefault{`true`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{occupied_depth}
+///     \cgalParamDescription{whether depth is measured in the occupied voxels instead of read from the
+///       distance field (a Boolean); `DF_L1_skeletonization` turns it on for the clouds it smoothed}
+///     \cgalParamDefault{`false`}
 ///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
 /// Skeleton voxels lie at least two voxels deep: the interior voxels one voxel deep are
@@ -335,11 +361,25 @@ Initial_skeleton<Traits> extract_initial_skeleton(const Distance_field<Traits>& 
 {
   const double c = internal::thinning_coefficient(np, "initial skeleton");
   const double spur_ratio = internal::spur_length_ratio(np, "initial skeleton");
-  const bool with_thin_parts = parameters::choose_parameter(parameters::get_parameter(np, internal_np::df_l1_thin_parts), true);
+  const bool in_occupied = parameters::choose_parameter(parameters::get_parameter(np, internal_np::df_l1_occupied_depth), false);
+  // The occupied solid already holds the thin parts.
+  const bool with_thin_parts =
+    !in_occupied && parameters::choose_parameter(parameters::get_parameter(np, internal_np::df_l1_thin_parts), true);
 
   const double end_depth_ratio = 0.75;
   Initial_skeleton<Traits> result;
-  const internal::Box_sum sums(field.values, field.dims);
+  // The depth that the ridge test and the thinning read: the distance field, or the
+  // depth in the occupied voxels less their outer layer (about the field where the
+  // boundary shell is one voxel thick).
+  std::vector<float> occupied_values;
+  if(in_occupied)
+  {
+    occupied_values = internal::occupied_depth(field);
+    for(float& d : occupied_values)
+      d = (std::max)(0.f, d - 1);
+  }
+  const std::vector<float>& values = in_occupied ? occupied_values : field.values;
+  const internal::Box_sum sums(values, field.dims);
   const int radii[3] = {1, 2, 3};
   const double counts[3] = {26, 124, 342};
 
@@ -350,7 +390,7 @@ Initial_skeleton<Traits> extract_initial_skeleton(const Distance_field<Traits>& 
     for(int j = 0; j < field.dims[1]; ++j)
       for(int i = 0; i < field.dims[0]; ++i)
       {
-        const float dt = field.values[field.index(i, j, k)];
+        const float dt = values[field.index(i, j, k)];
         if(dt <= 0)
           continue;
         ++interior;
@@ -368,7 +408,7 @@ Initial_skeleton<Traits> extract_initial_skeleton(const Distance_field<Traits>& 
       for(int i = 0; i < field.dims[0]; ++i)
       {
         const std::size_t v = field.index(i, j, k);
-        const float dt = field.values[v];
+        const float dt = values[v];
         // One voxel deep is what a flat, linear or noisy sheet of points encloses
         // between its samples: no volume, no skeleton.
         if(dt < 2)
@@ -385,11 +425,14 @@ Initial_skeleton<Traits> extract_initial_skeleton(const Distance_field<Traits>& 
       }
 
   std::vector<char> curves = internal::shape_volume(field);
+  if(in_occupied)
+    for(std::size_t v = 0; v < field.size(); ++v)
+      curves[v] = curves[v] || values[v] > 0;
   // The thinning order and the end test use the distance field, and in and around the
   // thin parts (where it is 0 or 1) the distance to the nearest unoccupied voxel minus
   // one (about the field plus the boundary layer elsewhere): their curves then follow
   // their middle, and end only at a voxel as deep as the others around it.
-  std::vector<float> depth = field.values;
+  std::vector<float> depth = values;
   internal::Thin_parts thin;
   if(with_thin_parts)
   {
@@ -422,7 +465,8 @@ Initial_skeleton<Traits> extract_initial_skeleton(const Distance_field<Traits>& 
     // In a thin part the field is 0 or 1; its radius is the distance to the nearest
     // unoccupied voxel, less the half voxel to the surface inside the boundary voxel.
     const double thin_radius = with_thin_parts && thin.solid[v] ? (thin.depth[v] - 0.5) * voxel : 0.0;
-    result.graph[d].radius = (std::max)(CGAL::to_double(field.distance(v)), thin_radius);
+    const double occupied_radius = in_occupied ? values[v] * voxel : 0.0;
+    result.graph[d].radius = (std::max)({CGAL::to_double(field.distance(v)), thin_radius, occupied_radius});
   }
   internal::prune_spurs(result.graph, spur_ratio, voxel);
   return result;

@@ -47,6 +47,7 @@ enum df_l1_contraction_stages_t { df_l1_contraction_stages };
 enum df_l1_denoising_t { df_l1_denoising };
 enum df_l1_denoising_neighbors_t { df_l1_denoising_neighbors };
 enum df_l1_thin_parts_t { df_l1_thin_parts };
+enum df_l1_occupied_depth_t { df_l1_occupied_depth };
 } // namespace internal_np
 
 namespace parameters {
@@ -101,6 +102,13 @@ CGAL_DF_L1_ADD_NAMED_PARAMETER(df_l1_spur_length, spur_length_ratio)
 /// have no skeleton voxel (default `true`; `DF_L1_skeletonization` turns it off for
 /// smoothed noisy clouds, whose ragged shell cannot be told from a thin part).
 CGAL_DF_L1_ADD_NAMED_PARAMETER(df_l1_thin_parts, thin_parts)
+/// \ingroup PkgDFL1SkeletonNamedParameters
+/// Whether the initial skeleton measures depth in the occupied voxels (the distance to
+/// the nearest unoccupied voxel, less one) instead of reading the distance field
+/// (default `false`; `DF_L1_skeletonization` turns it on for smoothed noisy clouds, whose
+/// boundary shell is several voxels thick and leaves thin limbs no interior voxel two
+/// deep). `thin_parts` is then moot: the occupied voxels hold the thin parts.
+CGAL_DF_L1_ADD_NAMED_PARAMETER(df_l1_occupied_depth, occupied_depth)
 /// \ingroup PkgDFL1SkeletonNamedParameters
 /// The refinement method, a `CGAL::DF_L1::Skeletonization_method` (default
 /// `DISTANCE_FIELD_GUIDED`; `L1_MEDIAL` switches the guidance off, as a baseline).
