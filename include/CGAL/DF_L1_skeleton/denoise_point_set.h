@@ -13,6 +13,8 @@
 #include <CGAL/DF_L1_skeleton/named_parameters.h>
 
 #include <CGAL/Named_function_parameters.h>
+#include <CGAL/Spatial_sort_traits_adapter_3.h>
+#include <CGAL/hilbert_sort.h>
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/tags.h>
 
@@ -49,6 +51,18 @@ public:
   Local_quadric_fitter(const std::vector<Point_3>& points, unsigned int k)
     : points_(points), k_(k), tree_(points)
   {
+  }
+
+  // 0, ..., n - 1 in the order of a Hilbert curve through the points: fitted in this
+  // order, consecutive searches visit the same tree nodes (the input order of a scan or a
+  // generator is often random in space).
+  std::vector<std::size_t> spatial_order() const
+  {
+    std::vector<std::size_t> order = tree_.indices();
+    CGAL::hilbert_sort(order.begin(), order.end(),
+                       CGAL::Spatial_sort_traits_adapter_3<Traits, typename Indexed_kd_tree<Traits>::Point_map>(tree_.point_map()),
+                       CGAL::Hilbert_sort_median_policy());
+    return order;
   }
 
   Fit fit(std::size_t i) const
@@ -197,7 +211,9 @@ denoise_point_set(const PointRange& points, const NamedParameters& np = paramete
   if(xyz.size() < 10)
     return smoothed;
   const internal::Local_quadric_fitter<Traits> fitter(xyz, k);
-  internal::for_each_index<ConcurrencyTag>(xyz.size(), [&](std::size_t i) {
+  const std::vector<std::size_t> order = fitter.spatial_order();
+  internal::for_each_index<ConcurrencyTag>(xyz.size(), [&](std::size_t q) {
+    const std::size_t i = order[q];
     const auto fit = fitter.fit(i);
     if(fit.valid)
       smoothed[i] = Point_3(fit.projection[0], fit.projection[1], fit.projection[2]);
