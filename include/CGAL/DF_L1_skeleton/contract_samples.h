@@ -111,8 +111,13 @@ std::vector<Junction_zone> junction_zones(const Graph& g, const Lookup& lookup)
 ///   the weight theta_i(n/N) of the skeleton term as N/n). The paper's literal form
 ///   x <- (u - v) x + ... diverges when v > 1 + u. With the distance-field guidance a
 ///   sample whose step would end in an exterior or outlier voxel, or in a voxel of smaller
-///   distance value, stays where it is for that iteration. A stage ends when the mean
-///   step is under 0.05 voxel or after `number_of_iterations` iterations. The data term
+///   distance value, stays where it is for that iteration. A stage ends after
+///   `number_of_iterations` iterations or when the mean step is under 0.05 voxel (about
+///   the L1-medial code's 0.0005 of the longest bounding-box side at V = 100), 0.2 voxel
+///   with the guidance: its graph is the initial skeleton re-centred on the samples, and
+///   over 5 x 72 test cases (5 seeds and sizes) the looser stop gave the same topology in
+///   355 cases instead of 356 and mean axis ratios within 0.002, with 15 to 40 % fewer
+///   iterations (noisy 35k stick figure: 35 to 21). The data term
 ///   of a sample sums over the points gathered in cells of h/8 to h/4 (centroid and
 ///   count of each cell): the same topology and centring on our 72 test cases as the
 ///   single points, many times faster (cells of h/16 to h/8, used before, cost more for
@@ -177,7 +182,7 @@ Contracted_samples<Traits> contract_samples(const std::vector<typename Traits::P
 
   const Field_lookup<Traits> lookup(field);
   const double voxel = lookup.voxel_size();
-  const double tolerance = 0.05 * voxel;
+  const double tolerance = (guided ? 0.2 : 0.05) * voxel;
 
   std::vector<Vec3> attractors;
   if(guided)
