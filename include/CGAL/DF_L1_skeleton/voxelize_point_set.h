@@ -298,10 +298,12 @@ std::vector<char> voted_interior(const Grid_geometry<Traits>& g, const std::vect
 {
   const std::uint8_t B = std::uint8_t(Voxel_label::BOUNDARY), E = std::uint8_t(Voxel_label::EXTERIOR);
   const std::size_t n = labels.size();
-  const std::vector<float> d = squared_distance_to_sites<ConcurrencyTag>(g.dims, [&](std::size_t v) { return labels[v] == B; });
+  const float band2 = float(band * band) + 1e-3f;
+  const std::vector<float> d =
+    squared_distance_to_sites<ConcurrencyTag>(g.dims, [&](std::size_t v) { return labels[v] == B; }, band2);
   std::vector<char> shell(n);
   for(std::size_t v = 0; v < n; ++v)
-    shell[v] = d[v] <= float(band * band) + 1e-3f;
+    shell[v] = d[v] <= band2;
   // The 26 fixed directions vote in streaks along the grid axes and diagonals (a ray
   // through a hole changes the vote of a whole line of voxels); averaged over a 5x5x5
   // box of voxels off the shell, the inside regions get smooth borders, and no tunnels.
@@ -393,8 +395,9 @@ void sweep_exterior_with_balls(const Grid_geometry<Traits>& g, std::vector<std::
                      I = std::uint8_t(Voxel_label::INTERIOR);
   const std::size_t n = labels.size();
   const float L2 = float(large * large), S2 = float(small * small);
+  // Bounded by L2: the ball centres only compare it with L2 and S2 <= L2.
   std::vector<float> dist =
-    squared_distance_to_sites<ConcurrencyTag>(g.dims, [&](std::size_t v) { return labels[v] == B || inside[v]; });
+    squared_distance_to_sites<ConcurrencyTag>(g.dims, [&](std::size_t v) { return labels[v] == B || inside[v]; }, L2);
   std::vector<char> large_centre = ball_centres(g, labels, dist, L2);
   std::vector<char> small_centre = ball_centres(g, labels, dist, S2);
 
@@ -438,7 +441,7 @@ void sweep_exterior_with_balls(const Grid_geometry<Traits>& g, std::vector<std::
   // within `small` of it gets a value <= L2, as one within `large` of a large centre.
   for(std::size_t v = 0; v < n; ++v)
     dist[v] = large_centre[v] ? 0.f : small_centre[v] ? L2 - S2 : EDT_INFINITY;
-  squared_euclidean_distance_transform<ConcurrencyTag>(dist, g.dims);
+  squared_euclidean_distance_transform<ConcurrencyTag>(dist, g.dims, L2);
   for(std::size_t v = 0; v < n; ++v)
   {
     if(inside[v])
