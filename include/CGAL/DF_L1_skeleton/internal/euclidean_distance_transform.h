@@ -27,16 +27,18 @@ namespace internal {
 constexpr float EDT_INFINITY = 1e20f;
 
 // Lower envelope of the parabolas y = f[q] + (x - q)^2 (Felzenszwalb & Huttenlocher
-// 2012): the exact 1D squared distance transform in linear time. `v` and `z` are scratch.
+// 2012): the exact 1D squared distance transform in linear time. `v`, `z` and `h` are
+// scratch; h[k] = f[v[k]] + v[k]^2 is kept rather than recomputed at each test.
 // The intersection s of two parabolas is compared with z[k] by cross-multiplication
 // (the denominator is positive), so that a division is made only for the parabola kept:
 // the divisions were most of the cost of the transform. The f[q] above `limit` are left
 // out (EDT_INFINITY always is).
 inline void squared_distance_transform_1d(const float* f, float* d, int n, float limit, std::vector<int>& v,
-                                          std::vector<double>& z)
+                                          std::vector<double>& z, std::vector<double>& h)
 {
   v.resize(n);
   z.resize(n + 1);
+  h.resize(n);
   int k = -1;
   for(int q = 0; q < n; ++q)
   {
@@ -46,15 +48,15 @@ inline void squared_distance_transform_1d(const float* f, float* d, int n, float
     double numerator = 0, denominator = 1;
     while(k >= 0)
     {
-      const int p = v[k];
-      numerator = fq - (double(f[p]) + double(p) * p);
-      denominator = 2.0 * (q - p);
+      numerator = fq - h[k];
+      denominator = 2.0 * (q - v[k]);
       if(numerator > z[k] * denominator)
         break;
       --k;
     }
     ++k;
     v[k] = q;
+    h[k] = fq;
     z[k] = k == 0 ? -std::numeric_limits<double>::infinity() : numerator / denominator;
     z[k + 1] = std::numeric_limits<double>::infinity();
   }
@@ -118,19 +120,19 @@ void for_each_row(std::size_t rows, const Function& f)
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, rows, 64),
                       [&](const tbb::blocked_range<std::size_t>& r) {
                         std::vector<int> v;
-                        std::vector<double> z;
+                        std::vector<double> z, h;
                         std::vector<float> in, out;
                         for(std::size_t row = r.begin(); row != r.end(); ++row)
-                          f(row, v, z, in, out);
+                          f(row, v, z, h, in, out);
                       });
     return;
   }
 #endif
   std::vector<int> v;
-  std::vector<double> z;
+  std::vector<double> z, h;
   std::vector<float> in, out;
   for(std::size_t row = 0; row < rows; ++row)
-    f(row, v, z, in, out);
+    f(row, v, z, h, in, out);
 }
 
 // In place: on input 0 at sites and EDT_INFINITY elsewhere; on output the exact squared
@@ -158,7 +160,8 @@ void squared_euclidean_distance_transform(std::vector<float>& grid, const std::a
     const int a1 = axis == 0 ? 1 : 0, a2 = 3 - axis - a1;
     const std::size_t n1 = dims[a1];
     for_each_row<ConcurrencyTag>(n1 * dims[a2], [&](std::size_t row, std::vector<int>& v,
-                                                    std::vector<double>& z, std::vector<float>& in,
+                                                    std::vector<double>& z, std::vector<double>& h,
+                                                    std::vector<float>& in,
                                                     std::vector<float>& out) {
       const std::size_t start = (row % n1) * strides[a1] + (row / n1) * strides[a2];
       in.resize(n);
@@ -171,7 +174,7 @@ void squared_euclidean_distance_transform(std::vector<float>& grid, const std::a
       if(kind == 1)
         squared_distance_to_sites_1d(in.data(), out.data(), int(n));
       else
-        squared_distance_transform_1d(in.data(), out.data(), int(n), limit, v, z);
+        squared_distance_transform_1d(in.data(), out.data(), int(n), limit, v, z, h);
       for(std::size_t q = 0; q < n; ++q)
         grid[start + q * stride] = out[q] > limit ? EDT_INFINITY : out[q];
     });
