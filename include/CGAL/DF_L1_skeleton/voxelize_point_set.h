@@ -635,7 +635,10 @@ voxelize_point_set(const PointRange& points, const NamedParameters& np = paramet
   {
     // Radii in finest voxels. s0' = 3^refinements; h = the sampling spacing.
     const double coarsest = std::pow(3.0, refinements);
-    const double h = internal::median_kth_neighbour_distance(xyz, 6, 2 * finest) / finest;
+    // The search radius starts at half a voxel and doubles until the ball holds 6 points
+    // (the distance found does not depend on it): a first radius of 2 voxels gathered
+    // thousands of points per ball in dense clouds (1M points: about 1 s).
+    const double h = internal::median_kth_neighbour_distance(xyz, 6, finest / 2) / finest;
     const double large = (std::max)(coarsest, 2 * h), small = (std::max)(coarsest / 2, h);
     const double small_ball_volume = 4.0 / 3.0 * 3.14159265358979 * small * small * small;
     const std::vector<char> inside =
