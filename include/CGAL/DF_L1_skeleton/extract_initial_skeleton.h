@@ -109,7 +109,7 @@ Thin_parts thin_parts(const Distance_field<Traits>& df, double margin, double re
   for(std::size_t v = 0; v < n; ++v)
     if(df.values[v] >= 2)
       power[v] = -float((df.values[v] + margin) * (df.values[v] + margin));
-  squared_euclidean_distance_transform<Tag>(power, df.dims);
+  squared_euclidean_distance_transform<Tag>(power, df.dims, 0.f); // only its sign is used
   std::vector<char> thick(n, 0), occupied(n, 0);
   bool outside_balls = false;
   for(std::size_t v = 0; v < n; ++v)
@@ -125,7 +125,8 @@ Thin_parts thin_parts(const Distance_field<Traits>& df, double margin, double re
   // need for the transforms below.
   if(!outside_balls)
     return result;
-  const std::vector<float> beyond = squared_distance_to_sites<Tag>(df.dims, [&](std::size_t v) { return thick[v]; });
+  const std::vector<float> beyond = squared_distance_to_sites<Tag>(
+    df.dims, [&](std::size_t v) { return thick[v]; }, float((std::max)(reach * reach, 3.0))); // compared with both
   bool any = false;
   for_each_26_component(df, [&](std::size_t v) { return occupied[v] && !thick[v]; },
                         [&](const std::vector<std::size_t>& component) {
@@ -140,7 +141,8 @@ Thin_parts thin_parts(const Distance_field<Traits>& df, double margin, double re
     return result;
   // The occupied voxels within margin + 1 of a thin part join it to the thick solid
   // across the shell that the balls cover.
-  const std::vector<float> near = squared_distance_to_sites<Tag>(df.dims, [&](std::size_t v) { return result.voxels[v]; });
+  const std::vector<float> near = squared_distance_to_sites<Tag>(
+    df.dims, [&](std::size_t v) { return result.voxels[v]; }, float((margin + 1) * (margin + 1)));
   for(std::size_t v = 0; v < n; ++v)
     result.solid[v] = occupied[v] && near[v] <= (margin + 1) * (margin + 1);
   result.depth = occupied_depth(df);

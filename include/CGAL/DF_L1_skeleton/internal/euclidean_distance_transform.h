@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <limits>
 #include <type_traits>
@@ -26,33 +27,36 @@ namespace internal {
 constexpr float EDT_INFINITY = 1e20f;
 
 // Lower envelope of the parabolas y = f[q] + (x - q)^2 (Felzenszwalb & Huttenlocher
-// 2012): the exact 1D squared distance transform in linear time. `v` and `z` are scratch.
+// 2012): the exact 1D squared distance transform in linear time. `v`, `z` and `h` are
+// scratch; h[k] = f[v[k]] + v[k]^2 is kept rather than recomputed at each test.
 // The intersection s of two parabolas is compared with z[k] by cross-multiplication
 // (the denominator is positive), so that a division is made only for the parabola kept:
-// the divisions were most of the cost of the transform.
-inline void squared_distance_transform_1d(const float* f, float* d, int n, std::vector<int>& v,
-                                          std::vector<double>& z)
+// the divisions were most of the cost of the transform. The f[q] above `limit` are left
+// out (EDT_INFINITY always is).
+inline void squared_distance_transform_1d(const float* f, float* d, int n, float limit, std::vector<int>& v,
+                                          std::vector<double>& z, std::vector<double>& h)
 {
   v.resize(n);
   z.resize(n + 1);
+  h.resize(n);
   int k = -1;
   for(int q = 0; q < n; ++q)
   {
-    if(f[q] >= EDT_INFINITY)
+    if(f[q] > limit)
       continue;
     const double fq = double(f[q]) + double(q) * q;
     double numerator = 0, denominator = 1;
     while(k >= 0)
     {
-      const int p = v[k];
-      numerator = fq - (double(f[p]) + double(p) * p);
-      denominator = 2.0 * (q - p);
+      numerator = fq - h[k];
+      denominator = 2.0 * (q - v[k]);
       if(numerator > z[k] * denominator)
         break;
       --k;
     }
     ++k;
     v[k] = q;
+    h[k] = fq;
     z[k] = k == 0 ? -std::numeric_limits<double>::infinity() : numerator / denominator;
     z[k + 1] = std::numeric_limits<double>::infinity();
   }
@@ -72,7 +76,7 @@ inline void squared_distance_transform_1d(const float* f, float* d, int n, std::
   }
 }
 
-// The same transform when every f[q] is 0 (a site) or EDT_INFINITY, as in the first pass
+// The same transform when every f[q] is 0 (a site) or left out, as in the first pass
 // from a set of sites: the squared distance to the nearest site, in two scans.
 inline void squared_distance_to_sites_1d(const float* f, float* d, int n)
 {
@@ -93,6 +97,20 @@ inline void squared_distance_to_sites_1d(const float* f, float* d, int n)
   }
 }
 
+// What a row needs: 0 when every f[q] is EDT_INFINITY (nothing), 1 when every f[q] is 0
+// or above `limit` (the two scans), 2 otherwise (the lower envelope). No early exit: the
+// loop vectorizes.
+inline int row_kind(const float* f, int n, float limit)
+{
+  int finite = 0, other = 0;
+  for(int q = 0; q < n; ++q)
+  {
+    finite += f[q] < EDT_INFINITY;
+    other += (f[q] != 0) & (f[q] <= limit);
+  }
+  return other > 0 ? 2 : finite > 0 ? 1 : 0;
+}
+
 template <class ConcurrencyTag, class Function>
 void for_each_row(std::size_t rows, const Function& f)
 {
@@ -102,28 +120,35 @@ void for_each_row(std::size_t rows, const Function& f)
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, rows, 64),
                       [&](const tbb::blocked_range<std::size_t>& r) {
                         std::vector<int> v;
-                        std::vector<double> z;
+                        std::vector<double> z, h;
                         std::vector<float> in, out;
                         for(std::size_t row = r.begin(); row != r.end(); ++row)
-                          f(row, v, z, in, out);
+                          f(row, v, z, h, in, out);
                       });
     return;
   }
 #endif
   std::vector<int> v;
-  std::vector<double> z;
+  std::vector<double> z, h;
   std::vector<float> in, out;
   for(std::size_t row = 0; row < rows; ++row)
-    f(row, v, z, in, out);
+    f(row, v, z, h, in, out);
 }
 
 // In place: on input 0 at sites and EDT_INFINITY elsewhere; on output the exact squared
 // Euclidean distance (in voxel units) to the nearest site. One separable pass per axis,
 // each parallel over the independent rows of that axis; the result does not depend on
 // the number of threads.
+// With a `bound` (>= 0), for callers that only compare the distances with a threshold,
+// the distances above it become EDT_INFINITY: a value above the bound after a pass only
+// grows in the next ones, so it is left out of them, and the rows far from every site
+// (most of the grid: the exterior) cost a scan. The distances up to the bound are
+// unchanged.
 template <class ConcurrencyTag>
-void squared_euclidean_distance_transform(std::vector<float>& grid, const std::array<int, 3>& dims)
+void squared_euclidean_distance_transform(std::vector<float>& grid, const std::array<int, 3>& dims,
+                                          float bound = EDT_INFINITY)
 {
+  const float limit = (std::min)(bound, std::nextafter(EDT_INFINITY, 0.f)); // EDT_INFINITY is left out
   const std::size_t nx = dims[0], ny = dims[1];
   const std::size_t strides[3] = {1, nx, nx * ny};
   for(int axis = 0; axis < 3; ++axis)
@@ -135,32 +160,38 @@ void squared_euclidean_distance_transform(std::vector<float>& grid, const std::a
     const int a1 = axis == 0 ? 1 : 0, a2 = 3 - axis - a1;
     const std::size_t n1 = dims[a1];
     for_each_row<ConcurrencyTag>(n1 * dims[a2], [&](std::size_t row, std::vector<int>& v,
-                                                    std::vector<double>& z, std::vector<float>& in,
+                                                    std::vector<double>& z, std::vector<double>& h,
+                                                    std::vector<float>& in,
                                                     std::vector<float>& out) {
       const std::size_t start = (row % n1) * strides[a1] + (row / n1) * strides[a2];
       in.resize(n);
       out.resize(n);
       for(std::size_t q = 0; q < n; ++q)
         in[q] = grid[start + q * stride];
-      if(std::all_of(in.begin(), in.end(), [](float x) { return x == 0 || x >= EDT_INFINITY; }))
+      const int kind = row_kind(in.data(), int(n), limit);
+      if(kind == 0)
+        return;
+      if(kind == 1)
         squared_distance_to_sites_1d(in.data(), out.data(), int(n));
       else
-        squared_distance_transform_1d(in.data(), out.data(), int(n), v, z);
+        squared_distance_transform_1d(in.data(), out.data(), int(n), limit, v, z, h);
       for(std::size_t q = 0; q < n; ++q)
-        grid[start + q * stride] = out[q];
+        grid[start + q * stride] = out[q] > limit ? EDT_INFINITY : out[q];
     });
   }
 }
 
 // Squared Euclidean distances (voxel units) from every voxel of a grid of `dims` to the
-// nearest voxel where `is_site(v)` holds; EDT_INFINITY everywhere when there is none.
+// nearest voxel where `is_site(v)` holds; EDT_INFINITY everywhere when there is none, and
+// where the distance is above `bound`.
 template <class ConcurrencyTag, class IsSite>
-std::vector<float> squared_distance_to_sites(const std::array<int, 3>& dims, const IsSite& is_site)
+std::vector<float> squared_distance_to_sites(const std::array<int, 3>& dims, const IsSite& is_site,
+                                             float bound = EDT_INFINITY)
 {
   std::vector<float> d(std::size_t(dims[0]) * dims[1] * dims[2]);
   for(std::size_t v = 0; v < d.size(); ++v)
     d[v] = is_site(v) ? 0.f : EDT_INFINITY;
-  squared_euclidean_distance_transform<ConcurrencyTag>(d, dims);
+  squared_euclidean_distance_transform<ConcurrencyTag>(d, dims, bound);
   return d;
 }
 

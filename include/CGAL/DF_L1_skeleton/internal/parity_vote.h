@@ -3,8 +3,8 @@
 #ifndef CGAL_DF_L1_SKELETON_INTERNAL_PARITY_VOTE_H
 #define CGAL_DF_L1_SKELETON_INTERNAL_PARITY_VOTE_H
 
+#include <algorithm>
 #include <array>
-#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -24,8 +24,8 @@ namespace internal {
 // One linear pass over the grid per direction: the parity of the runs from w on is that
 // from w + d on, flipped when w starts a run (w is in the shell and w + d is not); the
 // voxels are visited so that w + d comes first. Sequential: 26 passes over a million
-// voxels take about 0.05 s, and splitting them into dependent slabs for 2 threads was
-// slower (0.07 s).
+// voxels take about 0.015 s (0.05 s before the rows were vectorized; splitting them into
+// dependent slabs for 2 threads was slower, 0.07 s).
 inline std::vector<std::uint8_t> odd_crossing_votes(const std::vector<char>& shell, const std::array<int, 3>& dims)
 {
   const std::ptrdiff_t nx = dims[0], ny = dims[1], nz = dims[2];
@@ -39,28 +39,44 @@ inline std::vector<std::uint8_t> odd_crossing_votes(const std::vector<char>& she
         if(!di && !dj && !dk)
           continue;
         const std::ptrdiff_t step = (dk * ny + dj) * nx + di;
-        const std::ptrdiff_t sk = dk > 0 ? -1 : 1, sj = dj > 0 ? -1 : 1, si = di > 0 ? -1 : 1;
+        const std::ptrdiff_t sk = dk > 0 ? -1 : 1, sj = dj > 0 ? -1 : 1;
         for(std::ptrdiff_t k = first(nz, dk); k >= 0 && k < nz; k += sk)
-        {
-          const bool k_next = k + dk >= 0 && k + dk < nz;
           for(std::ptrdiff_t j = first(ny, dj); j >= 0 && j < ny; j += sj)
           {
-            const bool jk_next = k_next && j + dj >= 0 && j + dj < ny;
             const std::ptrdiff_t row = (k * ny + j) * nx;
-            for(std::ptrdiff_t i = first(nx, di); i >= 0 && i < nx; i += si)
+            const char* s = shell.data() + row;
+            char* p = parity.data() + row;
+            std::uint8_t* out = votes.data() + row;
+            if(k + dk < 0 || k + dk >= nz || j + dj < 0 || j + dj >= ny)
             {
-              const std::size_t v = std::size_t(row + i);
-              char next_shell = 0, next_parity = 0;
-              if(jk_next && i + di >= 0 && i + di < nx)
-              {
-                next_shell = shell[std::size_t(std::ptrdiff_t(v) + step)];
-                next_parity = parity[std::size_t(std::ptrdiff_t(v) + step)];
-              }
-              parity[v] = char(next_parity ^ (shell[v] && !next_shell));
-              votes[v] = std::uint8_t(votes[v] + next_parity);
+              for(std::ptrdiff_t i = 0; i < nx; ++i) // every ray leaves the grid at once
+                p[i] = s[i] != 0;
+              continue;
             }
+            if(!dj && !dk)
+            {
+              // Along x, each voxel needs the one before it in the row (kept in a register).
+              char next_parity = p[first(nx, di)] = s[first(nx, di)] != 0;
+              for(std::ptrdiff_t i = first(nx, di) - di; i >= 0 && i < nx; i -= di)
+              {
+                out[i] = std::uint8_t(out[i] + next_parity);
+                next_parity = p[i] = char(next_parity ^ (s[i] && !s[i + di]));
+              }
+              continue;
+            }
+            // w + d lies in a row done before: the voxels of this row are independent, and
+            // the loop vectorizes. The voxel whose ray leaves the grid sideways votes 0.
+            const char* next_s = s + step;
+            const char* next_p = p + step;
+            const std::ptrdiff_t lo = di < 0 ? 1 : 0, hi = di > 0 ? nx - 1 : nx;
+            for(std::ptrdiff_t i = lo; i < hi; ++i)
+            {
+              p[i] = char(next_p[i] ^ ((s[i] != 0) & (next_s[i] == 0)));
+              out[i] = std::uint8_t(out[i] + next_p[i]);
+            }
+            if(di != 0)
+              p[first(nx, di)] = s[first(nx, di)] != 0;
           }
-        }
       }
   return votes;
 }
@@ -74,25 +90,56 @@ inline std::vector<std::uint8_t> box_mean_votes(const std::vector<std::uint8_t>&
   const std::size_t n = votes.size();
   const std::size_t strides[3] = {1, std::size_t(dims[0]), std::size_t(dims[0]) * std::size_t(dims[1])};
   // vote sum * 2^12 + count: at most 26 * 11^3 * 2^12 + 11^3 < 2^31 for r <= 5
-  std::vector<std::int32_t> a(n), b(n);
+  std::vector<std::int32_t> a(n), b(n), sum;
   for(std::size_t v = 0; v < n; ++v)
     a[v] = used[v] ? (std::int32_t(votes[v]) << 12) + 1 : 0;
+  const std::size_t window = std::size_t(2 * r + 1), lag = std::size_t(r);
   for(int axis = 0; axis < 3; ++axis)
   {
     const std::size_t stride = strides[axis], len = std::size_t(dims[axis]);
-    for(std::size_t v = 0; v < n; ++v)
+    if(axis == 0)
     {
-      if((v / stride) % len != 0)
-        continue; // v starts a line along `axis`
-      std::int32_t sum = 0;
-      for(std::size_t t = 0; t < len + std::size_t(r); ++t)
+      for(std::size_t base = 0; base < n; base += len)
       {
+        std::int32_t s = 0;
+        for(std::size_t t = 0; t < len + lag; ++t)
+        {
+          s += t < len ? a[base + t] : 0;
+          s -= t >= window ? a[base + t - window] : 0;
+          if(t >= lag)
+            b[base + t - lag] = s;
+        }
+      }
+      a.swap(b);
+      continue;
+    }
+    // Along y and z, the lines start at the voxels `base + i`, i < stride; their running
+    // sums advance together, one slice of `stride` voxels at a time.
+    sum.resize(stride);
+    for(std::size_t base = 0; base < n; base += stride * len)
+    {
+      std::fill(sum.begin(), sum.end(), 0);
+      for(std::size_t t = 0; t < len + lag; ++t)
+      {
+        std::int32_t* s = sum.data();
         if(t < len)
-          sum += a[v + t * stride];
-        if(t >= std::size_t(2 * r + 1))
-          sum -= a[v + (t - std::size_t(2 * r + 1)) * stride];
-        if(t >= std::size_t(r))
-          b[v + (t - std::size_t(r)) * stride] = sum;
+        {
+          const std::int32_t* add = a.data() + base + t * stride;
+          for(std::size_t i = 0; i < stride; ++i)
+            s[i] += add[i];
+        }
+        if(t >= window)
+        {
+          const std::int32_t* sub = a.data() + base + (t - window) * stride;
+          for(std::size_t i = 0; i < stride; ++i)
+            s[i] -= sub[i];
+        }
+        if(t >= lag)
+        {
+          std::int32_t* out = b.data() + base + (t - lag) * stride;
+          for(std::size_t i = 0; i < stride; ++i)
+            out[i] = s[i];
+        }
       }
     }
     a.swap(b);
@@ -101,8 +148,8 @@ inline std::vector<std::uint8_t> box_mean_votes(const std::vector<std::uint8_t>&
   for(std::size_t v = 0; v < n; ++v)
   {
     const std::int32_t count = a[v] & 0xfff;
-    if(count > 0)
-      mean[v] = std::uint8_t(std::lround(double(a[v] >> 12) / double(count)));
+    if(count > 0) // sum / count rounded half up, as std::lround, in integers
+      mean[v] = std::uint8_t((2 * (a[v] >> 12) + count) / (2 * count));
   }
   return mean;
 }
