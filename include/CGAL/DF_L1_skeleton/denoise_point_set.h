@@ -13,8 +13,6 @@
 #include <CGAL/DF_L1_skeleton/named_parameters.h>
 
 #include <CGAL/Named_function_parameters.h>
-#include <CGAL/Spatial_sort_traits_adapter_3.h>
-#include <CGAL/hilbert_sort.h>
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/tags.h>
 
@@ -53,17 +51,8 @@ public:
   {
   }
 
-  // 0, ..., n - 1 in the order of a Hilbert curve through the points: fitted in this
-  // order, consecutive searches visit the same tree nodes (the input order of a scan or a
-  // generator is often random in space).
-  std::vector<std::size_t> spatial_order() const
-  {
-    std::vector<std::size_t> order = tree_.indices();
-    CGAL::hilbert_sort(order.begin(), order.end(),
-                       CGAL::Spatial_sort_traits_adapter_3<Traits, typename Indexed_kd_tree<Traits>::Point_map>(tree_.point_map()),
-                       CGAL::Hilbert_sort_median_policy());
-    return order;
-  }
+  // The points in an order that keeps consecutive fits' searches in the same tree nodes.
+  std::vector<std::size_t> spatial_order() const { return tree_.hilbert_order(); }
 
   Fit fit(std::size_t i) const
   {

@@ -13,8 +13,6 @@
 
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/Orthogonal_incremental_neighbor_search.h>
-#include <CGAL/Spatial_sort_traits_adapter_3.h>
-#include <CGAL/hilbert_sort.h>
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/tags.h>
 
@@ -138,11 +136,7 @@ std::vector<bool> flag_sparse_outliers(const PointRange& points, unsigned int k 
       neighbours[i * k + found] = i;
     kth[i] = std::sqrt(d2);
   };
-  // Queries in the order of a Hilbert curve: consecutive queries visit the same tree
-  // nodes (the input order of a scan or a generator is often random in space).
-  std::vector<std::size_t> query_order = ids;
-  CGAL::hilbert_sort(query_order.begin(), query_order.end(),
-                     CGAL::Spatial_sort_traits_adapter_3<Traits, typename Kd_tree::Point_map>(kd_tree.point_map()), CGAL::Hilbert_sort_median_policy());
+  const std::vector<std::size_t> query_order = kd_tree.hilbert_order();
   internal::for_each_index<ConcurrencyTag>(n, [&](std::size_t q) { measure(query_order[q]); });
   std::vector<double> sorted = kth;
   std::nth_element(sorted.begin(), sorted.begin() + n / 2, sorted.end());

@@ -6,6 +6,8 @@
 #include <CGAL/Orthogonal_k_neighbor_search.h>
 #include <CGAL/Search_traits_3.h>
 #include <CGAL/Search_traits_adapter.h>
+#include <CGAL/Spatial_sort_traits_adapter_3.h>
+#include <CGAL/hilbert_sort.h>
 #include <CGAL/property_map.h>
 
 #include <cstddef>
@@ -44,6 +46,16 @@ public:
   const Point_map& point_map() const { return map_; }
   /// 0, 1, ..., n - 1
   const std::vector<std::size_t>& indices() const { return indices_; }
+  /// 0, 1, ..., n - 1 in the order of a Hilbert curve through the points: searches made
+  /// in this order visit the same tree nodes one after the other (the input order of a
+  /// scan or a generator is often random in space)
+  std::vector<std::size_t> hilbert_order() const
+  {
+    std::vector<std::size_t> order = indices_;
+    CGAL::hilbert_sort(order.begin(), order.end(), CGAL::Spatial_sort_traits_adapter_3<Traits, Point_map>(map_),
+                       CGAL::Hilbert_sort_median_policy());
+    return order;
+  }
 
 private:
   Point_map map_;
