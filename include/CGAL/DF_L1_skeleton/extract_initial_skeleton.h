@@ -430,7 +430,8 @@ Initial_skeleton<Traits> extract_initial_skeleton(const Distance_field<Traits>& 
   if(in_occupied)
     for(std::size_t v = 0; v < field.size(); ++v)
       curves[v] = curves[v] || values[v] > 0;
-  // The thinning order and the end test use the distance field, and in and around the
+  // The thinning order and the end test use the depth above (the distance field, or the
+  // depth in the occupied voxels with `occupied_depth`), and in and around the
   // thin parts (where it is 0 or 1) the distance to the nearest unoccupied voxel minus
   // one (about the field plus the boundary layer elsewhere): their curves then follow
   // their middle, and end only at a voxel as deep as the others around it.
