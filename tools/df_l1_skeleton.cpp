@@ -17,6 +17,9 @@
 #include <tbb/global_control.h>
 
 #include <sys/resource.h>
+#ifdef __GLIBC__
+#include <malloc.h>
+#endif
 
 #include <algorithm>
 #include <chrono>
@@ -555,6 +558,13 @@ int run(const Settings& s)
 
 int main(int argc, char** argv)
 {
+#ifdef __GLIBC__
+  // The stages allocate and free many grid-sized buffers (megabytes each). glibc serves
+  // them with mmap and unmaps them on free, so every new buffer page-faults in again:
+  // keeping them on the heap for reuse saved about 5 % of the run.
+  mallopt(M_MMAP_THRESHOLD, 1 << 30);
+  mallopt(M_TRIM_THRESHOLD, 1 << 30);
+#endif
   Settings settings;
   bool help = false, version = false;
   try
