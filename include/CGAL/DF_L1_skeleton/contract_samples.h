@@ -118,10 +118,10 @@ std::vector<Junction_zone> junction_zones(const Graph& g, const Lookup& lookup)
 ///   over 5 x 72 test cases (5 seeds and sizes) the looser stop gave the same topology in
 ///   355 cases instead of 356 and mean axis ratios within 0.002, with 15 to 40 % fewer
 ///   iterations (noisy 35k stick figure: 35 to 21). The data term
-///   of a sample sums over the points gathered in cells of h/8 to h/4 (centroid and
-///   count of each cell): the same topology and centring on our 72 test cases as the
-///   single points, many times faster (cells of h/16 to h/8, used before, cost more for
-///   no measured gain).
+///   of a sample sums over the points gathered in cells of h/6 to h/3 (centroid and
+///   count of each cell): the same topology and centring on our test cases as the
+///   single points, many times faster (cells of h/8 to h/4, used before, cost 10 to 15 %
+///   more of the whole run for no measured gain; h/5 to h/2.5 lost a case).
 /// - **Support radius.** Every sample starts with h0 = 2 d_bb / cbrt(N). After a stage,
 ///   with the guidance (Eq. 9): the theta-weighted centre c of the initial-skeleton points
 ///   in the sample's ball (normalised by the sum of the weights; the paper's division by

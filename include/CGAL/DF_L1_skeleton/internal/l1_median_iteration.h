@@ -144,9 +144,9 @@ inline Ball_sums ball_sums(const Uniform_grid& grid, const std::vector<Vec3>& po
 
 // The points gathered by cubic cells of side `cell`: the centroid of each non-empty cell
 // and its number of points, in the order of the cells (deterministic). The data term of
-// Eq. 8 sums over hundreds of points per ball; with cells a quarter to an eighth of the
+// Eq. 8 sums over hundreds of points per ball; with cells a third to a sixth of the
 // support radius, a centroid stands for several of them and the errors of the weights
-// theta / r across a cell largely cancel around the centroid (measured on our 72 test
+// theta / r across a cell largely cancel around the centroid (measured on our test
 // cases: the same topology and centring).
 struct Aggregated_points
 {
@@ -208,7 +208,7 @@ inline Aggregated_points group_by_cell(const std::vector<std::array<long long, 3
 }
 
 // The input points gathered at cell sizes doubling from `finest`, each with a grid for
-// ball queries, so that a sample of support radius h sums over cells of h/8 to h/4.
+// ball queries, so that a sample of support radius h sums over cells of h/6 to h/3.
 // The cells nest (one origin, sizes doubling), so each level groups the centroids of
 // the level below instead of all the points again. The levels are built once per
 // contraction and extended when the support radii grow (rebuilding them for every
@@ -235,7 +235,7 @@ public:
   // call it between the parallel loops).
   void cover_radius(double radius)
   {
-    while(!levels_.empty() && 4 * cells_.back() < radius && levels_.back().centroid.size() > 1)
+    while(!levels_.empty() && cells_per_radius * cells_.back() < radius && levels_.back().centroid.size() > 1)
     {
       const Aggregated_points& below = levels_.back();
       std::vector<std::array<long long, 3>> parent(below.cell.size());
@@ -251,12 +251,20 @@ public:
     if(levels_.empty())
       return Ball_sums();
     std::size_t k = 0;
-    while(k + 1 < levels_.size() && 4 * cells_[k + 1] <= h)
+    while(k + 1 < levels_.size() && cells_per_radius * cells_[k + 1] <= h)
       ++k;
     return ball_sums(grids_[k], levels_[k].centroid, x, h, 1, std::size_t(-1), &levels_[k].multiplicity);
   }
 
 private:
+  // A ball of radius h reads the level whose cells are h/6 to h/3. With h/8 to h/4, the
+  // noisy 35k stick figure's first stage read 690 centroids per ball (the level's cells
+  // fell just under h/4), most of its contraction. Over 5 x 72 test cases (5 seeds and
+  // sizes) the coarser cells gave the designed topology in 354 cases instead of 355
+  // (a noisy many-armed star that already missed an arm) with the same mean axis
+  // ratios; h/5 to h/2.5 lost a seed-7 case and a loop of the woman scan.
+  static constexpr double cells_per_radius = 3;
+
   void add_level(Aggregated_points&& level, double cell)
   {
     levels_.push_back(std::move(level));
