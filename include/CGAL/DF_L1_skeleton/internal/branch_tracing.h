@@ -433,10 +433,11 @@ private:
       double best_d = 0;
       for(std::size_t b = 0; b < n; ++b)
       {
-        if(s_.role[b] != Sample_role::BRANCH || b == e || s_.is_end(b) || same_branch(e, b))
+        if(s_.role[b] != Sample_role::BRANCH || b == e || s_.is_end(b))
           continue;
         const double dist = distance(s_.x[b], s_.x[e]);
-        if(dist >= join_radius(e) || dot(s_.x[b] - s_.x[e], d) < 0.5 * dist) // within 60 degrees
+        // within 60 degrees; the walk along the branches last, for the few samples in reach
+        if(dist >= join_radius(e) || dot(s_.x[b] - s_.x[e], d) < 0.5 * dist || same_branch(e, b))
           continue;
         if(best == npos || dist < best_d)
         {
