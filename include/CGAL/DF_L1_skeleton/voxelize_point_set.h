@@ -13,6 +13,7 @@
 #include <CGAL/DF_L1_skeleton/internal/point_range.h>
 #include <CGAL/DF_L1_skeleton/internal/uniform_grid.h>
 #include <CGAL/DF_L1_skeleton/internal/voxel_components.h>
+#include <CGAL/DF_L1_skeleton/internal/voxel_morphology.h>
 #include <CGAL/DF_L1_skeleton/named_parameters.h>
 
 #include <CGAL/Named_function_parameters.h>
@@ -298,12 +299,10 @@ std::vector<char> voted_interior(const Grid_geometry<Traits>& g, const std::vect
 {
   const std::uint8_t B = std::uint8_t(Voxel_label::BOUNDARY), E = std::uint8_t(Voxel_label::EXTERIOR);
   const std::size_t n = labels.size();
-  const float band2 = float(band * band) + 1e-3f;
-  const std::vector<float> d =
-    squared_distance_to_sites<ConcurrencyTag>(g.dims, [&](std::size_t v) { return labels[v] == B; }, band2);
-  std::vector<char> shell(n);
+  std::vector<char> boundary(n);
   for(std::size_t v = 0; v < n; ++v)
-    shell[v] = d[v] <= band2;
+    boundary[v] = labels[v] == B;
+  const std::vector<char> shell = dilate_by_ball(boundary, g.dims, double(float(band * band) + 1e-3f));
   // The 26 fixed directions vote in streaks along the grid axes and diagonals (a ray
   // through a hole changes the vote of a whole line of voxels); averaged over a 5x5x5
   // box of voxels off the shell, the inside regions get smooth borders, and no tunnels.
@@ -340,6 +339,8 @@ std::vector<char> voted_interior(const Grid_geometry<Traits>& g, const std::vect
   grow_face_connected(g, inside, [&](std::size_t w) {
     return !shell[w] && labels[w] == E && mean[w] >= INSIDE_GROWTH_VOTES;
   });
+  if(std::find(inside.begin(), inside.end(), 1) == inside.end())
+    return inside;
   // Where the flood leaked into a part, it also left a film of exterior voxels on the
   // shell between the inside and the points; a shell voxel nearer to the inside than to
   // any voxel off the shell outside it belongs to the part.
