@@ -6,7 +6,9 @@
 
 #include <CGAL/DF_L1_skeleton.h>
 #include <CGAL/DF_L1_skeleton/IO/read_point_cloud.h>
+#include <CGAL/DF_L1_skeleton/internal/euclidean_distance_transform.h>
 #include <CGAL/DF_L1_skeleton/internal/parity_vote.h>
+#include <CGAL/DF_L1_skeleton/internal/voxel_morphology.h>
 #include <CGAL/DF_L1_skeleton/skeleton_statistics.h>
 
 #include <catch2/catch.hpp>
@@ -156,6 +158,36 @@ TEST_CASE("parity votes: a closed shell votes inside everywhere, an open face ke
             ++count;
           }
     CHECK(int(mean[index(c[0], c[1], c[2])]) == int(std::lround(sum / count)));
+  }
+}
+
+TEST_CASE("parity votes: the shell's ball dilation equals the thresholded distance transform", "[voxels]")
+{
+  // Random sites (sparse and dense, on the grid's faces too) and radii from none to a few
+  // voxels, as the band of the parity vote takes them (the squared band plus 0.001).
+  DF_L1_test::internal::Rng rng(17);
+  for(int trial = 0; trial < 40; ++trial)
+  {
+    const std::array<int, 3> dims = {{1 + int(rng.index(14)), 1 + int(rng.index(14)), 1 + int(rng.index(14))}};
+    const std::size_t n = std::size_t(dims[0]) * dims[1] * dims[2];
+    const double density = trial % 2 == 0 ? 0.02 : 0.3;
+    std::vector<char> sites(n);
+    for(char& s : sites)
+      s = rng.uniform() < density;
+    const double band = 0.25 * double(rng.index(14)); // 0 to 3.25 voxels
+    const float band2 = float(band * band) + 1e-3f;
+    const std::vector<char> dilated = DF::internal::dilate_by_ball(sites, dims, double(band2));
+    const std::vector<float> d =
+      DF::internal::squared_distance_to_sites<CGAL::Sequential_tag>(dims, [&](std::size_t v) { return sites[v] != 0; });
+    std::size_t differences = 0, marked = 0;
+    for(std::size_t v = 0; v < n; ++v)
+    {
+      differences += (dilated[v] != 0) != (d[v] <= band2);
+      marked += dilated[v] != 0;
+    }
+    INFO("trial " << trial << ", band " << band);
+    CHECK(differences == 0);
+    CHECK(marked >= std::size_t(std::count(sites.begin(), sites.end(), 1)));
   }
 }
 
