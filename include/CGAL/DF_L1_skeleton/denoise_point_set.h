@@ -7,9 +7,9 @@
 /// Stage 0b: the surface noise of the cloud, and points smoothed onto local quadrics.
 
 #include <CGAL/DF_L1_skeleton/errors.h>
-#include <CGAL/DF_L1_skeleton/internal/indexed_kd_tree.h>
 #include <CGAL/DF_L1_skeleton/internal/parallel_for.h>
 #include <CGAL/DF_L1_skeleton/internal/point_range.h>
+#include <CGAL/DF_L1_skeleton/internal/uniform_grid.h>
 #include <CGAL/DF_L1_skeleton/named_parameters.h>
 
 #include <CGAL/Named_function_parameters.h>
@@ -19,7 +19,9 @@
 #include <Eigen/Dense>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -36,7 +38,6 @@ template <class Traits>
 class Local_quadric_fitter
 {
   typedef typename Traits::Point_3 Point_3;
-  typedef typename Indexed_kd_tree<Traits>::K_neighbor_search Search;
 
 public:
   struct Fit
@@ -47,26 +48,23 @@ public:
   };
 
   Local_quadric_fitter(const std::vector<Point_3>& points, unsigned int k)
-    : points_(points), k_(k), tree_(points)
+    : xyz_(to_xyz(points, CGAL::Identity_property_map<Point_3>())), k_(k), grid_(xyz_, 0)
   {
   }
 
-  // The points in an order that keeps consecutive fits' searches in the same tree nodes.
-  std::vector<std::size_t> spatial_order() const { return tree_.hilbert_order(); }
+  // The points in an order that keeps consecutive fits' searches in the same cells.
+  const std::vector<std::size_t>& spatial_order() const { return grid_.indices_by_cell(); }
 
   Fit fit(std::size_t i) const
   {
     Fit result;
+    std::vector<std::pair<double, std::size_t>> nearest; // the point itself first
+    grid_.k_nearest(xyz_[i], k_, [](std::size_t) { return true; }, nearest);
     std::vector<Eigen::Vector3d> q;
     q.reserve(k_);
-    Search search(tree_.tree(), points_[i], k_, 0, true, tree_.distance());
-    for(const auto& neighbour : search)
-    {
-      const Point_3& p = points_[neighbour.first];
-      q.emplace_back(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
-    }
-    const Eigen::Vector3d self(CGAL::to_double(points_[i].x()), CGAL::to_double(points_[i].y()),
-                               CGAL::to_double(points_[i].z()));
+    for(const auto& neighbour : nearest)
+      q.emplace_back(xyz_[neighbour.second][0], xyz_[neighbour.second][1], xyz_[neighbour.second][2]);
+    const Eigen::Vector3d self(xyz_[i][0], xyz_[i][1], xyz_[i][2]);
     result.projection = self;
     const int m = int(q.size());
     if(m < 10) // well over the 6 coefficients, so that the residual measures the noise
@@ -104,9 +102,9 @@ public:
   }
 
 private:
-  const std::vector<Point_3>& points_;
+  std::vector<std::array<double, 3>> xyz_;
   unsigned int k_;
-  Indexed_kd_tree<Traits> tree_;
+  Uniform_grid grid_; // cells for k-nearest searches
 };
 
 template <class PointRange, class PointMap>
@@ -200,7 +198,7 @@ denoise_point_set(const PointRange& points, const NamedParameters& np = paramete
   if(xyz.size() < 10)
     return smoothed;
   const internal::Local_quadric_fitter<Traits> fitter(xyz, k);
-  const std::vector<std::size_t> order = fitter.spatial_order();
+  const std::vector<std::size_t>& order = fitter.spatial_order();
   internal::for_each_index<ConcurrencyTag>(xyz.size(), [&](std::size_t q) {
     const std::size_t i = order[q];
     const auto fit = fitter.fit(i);
