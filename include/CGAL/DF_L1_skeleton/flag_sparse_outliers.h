@@ -99,16 +99,19 @@ std::vector<bool> flag_sparse_outliers(const PointRange& points, unsigned int k 
   std::vector<double> kth(n);
   std::vector<std::size_t> neighbours(n * k);
   std::vector<char> flagged(n, 0); // a copy of flags that threads may read
-  const auto measure = [&](std::size_t i) {
+  const auto measure = [&](std::size_t i, bool none_flagged) {
     std::vector<std::pair<double, std::size_t>> nearest;
-    grid.k_nearest(xyz[i], k, [&](std::size_t j) { return j != i && !flagged[j]; }, nearest);
+    if(none_flagged) // the first pass: flagged is not read (at random places, on a large cloud)
+      grid.k_nearest(xyz[i], k, [&](std::size_t j) { return j != i; }, nearest);
+    else
+      grid.k_nearest(xyz[i], k, [&](std::size_t j) { return j != i && !flagged[j]; }, nearest);
     for(std::size_t m = 0; m < k; ++m) // fewer than k unflagged points left: the point itself
       neighbours[i * k + m] = m < nearest.size() ? nearest[m].second : i;
     kth[i] = nearest.empty() ? 0 : std::sqrt(nearest.back().first);
   };
   // in cell order: consecutive searches read the same cells
   const std::vector<std::size_t>& query_order = grid.indices_by_cell();
-  internal::for_each_index<ConcurrencyTag>(n, [&](std::size_t q) { measure(query_order[q]); });
+  internal::for_each_index<ConcurrencyTag>(n, [&](std::size_t q) { measure(query_order[q], true); });
   std::vector<double> sorted = kth;
   std::nth_element(sorted.begin(), sorted.begin() + n / 2, sorted.end());
   const double threshold = ratio * sorted[n / 2];
@@ -125,9 +128,8 @@ std::vector<bool> flag_sparse_outliers(const PointRange& points, unsigned int k 
   // Only the points that lost a neighbour to the last pass need a new test: removing
   // points makes the distances of the others grow or stay, and a point whose own
   // distance stays is not flagged by its neighbours' growing.
-  std::vector<std::size_t> candidates(n);
-  for(std::size_t i = 0; i < n; ++i)
-    candidates[i] = i;
+  // first all the points, in cell order: the tests of neighbours read the same distances
+  std::vector<std::size_t> candidates = query_order;
   std::vector<char> verdict(n, 0);
   std::size_t remaining = n;
   while(!candidates.empty())
@@ -147,7 +149,7 @@ std::vector<bool> flag_sparse_outliers(const PointRange& points, unsigned int k 
       if(!flagged[i] && std::any_of(neighbours.begin() + i * k, neighbours.begin() + (i + 1) * k,
                                     [&](std::size_t j) { return flagged[j] != 0; }))
         candidates.push_back(i);
-    internal::for_each_index<ConcurrencyTag>(candidates.size(), [&](std::size_t c) { measure(candidates[c]); });
+    internal::for_each_index<ConcurrencyTag>(candidates.size(), [&](std::size_t c) { measure(candidates[c], false); });
   }
   return flags;
 }
