@@ -45,6 +45,7 @@
 
 #include <sys/resource.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -53,6 +54,7 @@
 #include <iostream>
 #include <map>
 #include <memory>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -77,7 +79,8 @@ double peak_memory_mib()
 struct Options
 {
   std::string method, input, shape, variant = "clean", label;
-  int resolution = 100, samples = 1500, threads = 2, runs = 5;
+  int resolution = 100, samples = 1500, runs = 5;
+  std::vector<int> threads = {2};
 };
 
 // Seconds of each stage over the runs, in the order the stages first ran, and the peak
@@ -178,24 +181,26 @@ void write_obj(const std::string& path, const Graph& g)
     throw std::runtime_error("cannot write " + path);
 }
 
-Record run_ours(const Options& o)
+// The runs of our method on one input and one number of threads, made one at a time, so
+// that runs on different numbers of threads can alternate (in one process, the memory
+// figures of the later ones include the peaks of the earlier ones).
+class Our_runs
 {
-  typedef CGAL::DF_L1_skeletonization<Kernel> Skeletonization;
-  const DF::Skeletonization_method method =
-    o.method == "l1" ? DF::Skeletonization_method::L1_MEDIAL : DF::Skeletonization_method::DISTANCE_FIELD_GUIDED;
-  const std::string output = scratch_path("skeleton.obj");
-  Stage_clock clock;
-  Record r;
-  std::vector<double> projection; // seconds of the projection step (inside the contraction), per run
-  for(int run = 0; run < o.runs; ++run)
+public:
+  explicit Our_runs(const Options& o) : o_(o), output_(scratch_path("skeleton.obj")) {}
+
+  void run_once(bool last)
   {
-    clock.next_run();
-    const auto cloud = clock.time("read", [&] { return DF::read_point_cloud<Kernel>(o.input); });
+    typedef CGAL::DF_L1_skeletonization<Kernel> Skeletonization;
+    const DF::Skeletonization_method method =
+      o_.method == "l1" ? DF::Skeletonization_method::L1_MEDIAL : DF::Skeletonization_method::DISTANCE_FIELD_GUIDED;
+    clock_.next_run();
+    const auto cloud = clock_.time("read", [&] { return DF::read_point_cloud<Kernel>(o_.input); });
     Skeletonization s(cloud.points,
                       params::skeletonization_method(
-                        method, params::voxel_resolution(o.resolution, params::number_of_samples(std::size_t(o.samples)))));
+                        method, params::voxel_resolution(o_.resolution, params::number_of_samples(std::size_t(o_.samples)))));
     const auto stage = [&](const char* name, void (Skeletonization::*f)()) {
-      clock.time(name, [&] {
+      clock_.time(name, [&] {
         (s.*f)();
         return 0;
       });
@@ -208,31 +213,50 @@ Record run_ours(const Options& o)
     stage("distance", &Skeletonization::compute_distance_field);
     stage("initial", &Skeletonization::extract_initial_skeleton);
     stage("contraction", &Skeletonization::contract);
-    projection.push_back(0);
+    projection_.push_back(0);
     for(const auto& st : s.contracted_samples().stages)
-      projection.back() += st.projection_seconds;
+      projection_.back() += st.projection_seconds;
     stage("skeleton", &Skeletonization::convert_to_skeleton);
-    clock.time("write", [&] {
-      DF::write_skeleton(output, s.skeleton());
+    clock_.time("write", [&] {
+      DF::write_skeleton(output_, s.skeleton());
       return 0;
     });
-    if(run + 1 == o.runs)
+    if(last)
     {
-      r.set("points", double(cloud.points.size()));
+      r_.set("points", double(cloud.points.size()));
       int iterations = 0;
       for(const auto& st : s.contracted_samples().stages)
         iterations += st.iterations;
-      r.set("samples", double(s.contracted_samples().points.size())).set("iterations", double(iterations));
-      r.set("contraction_stages", double(s.contracted_samples().stages.size()));
-      r.set("denoised", s.denoised() ? 1.0 : 0.0);
-      write_quality(r, o, s.skeleton(), CGAL::to_double(s.distance_field().voxel_size));
+      r_.set("samples", double(s.contracted_samples().points.size())).set("iterations", double(iterations));
+      r_.set("contraction_stages", double(s.contracted_samples().stages.size()));
+      r_.set("denoised", s.denoised() ? 1.0 : 0.0);
+      write_quality(r_, o_, s.skeleton(), CGAL::to_double(s.distance_field().voxel_size));
     }
   }
-  std::remove(output.c_str());
-  r.set("t.refinement", clock.median("contraction") + clock.median("skeleton"));
-  r.set("projection_seconds", DF_L1_bench::spread(projection).median);
-  clock.write(r);
-  return r;
+
+  Record result()
+  {
+    std::remove(output_.c_str());
+    r_.set("t.refinement", clock_.median("contraction") + clock_.median("skeleton"));
+    r_.set("projection_seconds", DF_L1_bench::spread(projection_).median);
+    clock_.write(r_);
+    return r_;
+  }
+
+private:
+  const Options& o_;
+  std::string output_;
+  Stage_clock clock_;
+  Record r_;
+  std::vector<double> projection_; // seconds of the projection step (inside the contraction), per run
+};
+
+Record run_ours(const Options& o)
+{
+  Our_runs runs(o);
+  for(int run = 0; run < o.runs; ++run)
+    runs.run_once(run + 1 == o.runs);
+  return runs.result();
 }
 
 Record run_poisson_mcf(const Options& o)
@@ -336,15 +360,47 @@ Record run_mesh_mcf(const Options& o)
   return r;
 }
 
-int run(const Options& o)
+// Prints the result line of one method and one number of threads.
+void print_line(const Options& o, int threads, const Record& m)
 {
-  const tbb::global_control threads(tbb::global_control::max_allowed_parallelism, std::size_t(o.threads));
+  std::string label = o.label.empty() ? std::string("-") : o.label;
+  const std::size_t at = label.find("{threads}");
+  if(at != std::string::npos)
+    label.replace(at, 9, std::to_string(threads));
   Record r;
-  r.set("label", o.label.empty() ? std::string("-") : o.label).set("method", o.method);
+  r.set("label", label).set("method", o.method);
   r.set("input", std::filesystem::path(o.input).filename().string());
   r.set("shape", o.shape.empty() ? std::string("-") : o.shape).set("variant", o.variant);
   r.set("resolution", double(o.resolution)).set("samples_requested", double(o.samples));
-  r.set("threads", double(o.threads)).set("runs", double(o.runs));
+  r.set("threads", double(threads)).set("runs", double(o.runs));
+  for(const auto& f : m.fields())
+    r.set(f.first, f.second);
+  r.set("peak_mib", peak_memory_mib());
+  std::cout << r.line() << std::endl;
+}
+
+int run(const Options& o)
+{
+  if(o.threads.size() > 1)
+  {
+    // Our method on several numbers of threads: the runs alternate (1, 2, 1, 2, ...) so
+    // that the ratios between them do not follow the drift of the machine's speed.
+    if(o.method != "df_l1" && o.method != "l1")
+      throw std::invalid_argument("several numbers of threads: df_l1 or l1 only");
+    std::vector<std::unique_ptr<Our_runs>> runs;
+    for(std::size_t t = 0; t < o.threads.size(); ++t)
+      runs.push_back(std::make_unique<Our_runs>(o));
+    for(int run = 0; run < o.runs; ++run)
+      for(std::size_t t = 0; t < o.threads.size(); ++t)
+      {
+        const tbb::global_control threads(tbb::global_control::max_allowed_parallelism, std::size_t(o.threads[t]));
+        runs[t]->run_once(run + 1 == o.runs);
+      }
+    for(std::size_t t = 0; t < o.threads.size(); ++t)
+      print_line(o, o.threads[t], runs[t]->result());
+    return 0;
+  }
+  const tbb::global_control threads(tbb::global_control::max_allowed_parallelism, std::size_t(o.threads[0]));
   Record m;
   if(o.method == "df_l1" || o.method == "l1")
     m = run_ours(o);
@@ -354,22 +410,21 @@ int run(const Options& o)
     m = run_mesh_mcf(o);
   else
     throw std::invalid_argument("unknown method '" + o.method + "' (df_l1, l1, poisson_mcf, mesh_mcf)");
-  for(const auto& f : m.fields())
-    r.set(f.first, f.second);
-  r.set("peak_mib", peak_memory_mib());
-  std::cout << r.line() << std::endl;
+  print_line(o, o.threads[0], m);
   return 0;
 }
 
 void usage(std::ostream& os)
 {
   os << "usage: df_l1_benchmark run METHOD INPUT [--shape NAME] [--variant NAME] [--resolution V]\n"
-        "                          [--samples M] [--threads T] [--runs R] [--label TEXT]\n"
+        "                          [--samples M] [--threads T[,T...]] [--runs R] [--label TEXT]\n"
         "       df_l1_benchmark report RESULTS.tsv OUT_DIR [--command TEXT] [--notes FILE]\n"
         "       df_l1_benchmark compare BASELINE.tsv RESULTS.tsv [--tolerance FRACTION]\n"
         "METHOD: df_l1 | l1 | poisson_mcf | mesh_mcf. `run` prints one line of tab-separated\n"
         "key=value fields: t.STAGE (median seconds), tmin./tmax. (over the runs), mib.STAGE\n"
-        "(peak resident MiB at the end of the stage, first run), counts and quality.\n";
+        "(peak resident MiB at the end of the stage, first run), counts and quality.\n"
+        "Several numbers of threads (df_l1, l1): one line each, their runs alternating;\n"
+        "'{threads}' in the label is replaced by the number.\n";
 }
 
 } // namespace
@@ -402,11 +457,17 @@ int main(int argc, char** argv)
         else if(k == "--label") o.label = value(i);
         else if(k == "--resolution") o.resolution = std::stoi(value(i));
         else if(k == "--samples") o.samples = std::stoi(value(i));
-        else if(k == "--threads") o.threads = std::stoi(value(i));
+        else if(k == "--threads")
+        {
+          o.threads.clear();
+          std::stringstream list(value(i));
+          for(std::string t; std::getline(list, t, ',');)
+            o.threads.push_back(std::stoi(t));
+        }
         else if(k == "--runs") o.runs = std::stoi(value(i));
         else throw std::invalid_argument("unknown option " + k);
       }
-      if(o.runs < 1 || o.threads < 1)
+      if(o.runs < 1 || o.threads.empty() || *std::min_element(o.threads.begin(), o.threads.end()) < 1)
         throw std::invalid_argument("--runs and --threads must be at least 1");
       return run(o);
     }

@@ -8,13 +8,16 @@
 
 #include <CGAL/DF_L1_skeleton/Skeleton_graph.h>
 #include <CGAL/DF_L1_skeleton/errors.h>
+#include <CGAL/DF_L1_skeleton/internal/parallel_for.h>
 
 #include <CGAL/Orthogonal_k_neighbor_search.h>
 #include <CGAL/Search_traits_3.h>
 #include <CGAL/Search_traits_adapter.h>
 #include <CGAL/property_map.h>
+#include <CGAL/tags.h>
 
 #include <cstddef>
+#include <iterator>
 #include <vector>
 
 namespace CGAL {
@@ -23,13 +26,16 @@ namespace DF_L1 {
 /// \ingroup PkgDFL1SkeletonRef
 /// Assigns every input point that is not an outlier to its nearest skeleton vertex
 /// (ties go to the lower vertex index), replacing the vertices' `points` lists. Each
-/// non-outlier point then belongs to exactly one vertex.
+/// non-outlier point then belongs to exactly one vertex. The nearest vertices are found
+/// in parallel and the lists filled in point order, so the result does not depend on the
+/// number of threads.
+/// \tparam ConcurrencyTag `CGAL::Sequential_tag` or `CGAL::Parallel_tag`
 /// \tparam PointRange a random-access range of `Traits::Point_3`
 /// \param points the input points
 /// \param is_outlier one flag per point (may be empty: no outliers)
 /// \param skeleton the skeleton whose `points` members are filled
 /// \throws Invalid_input if `is_outlier` is neither empty nor of the size of `points`
-template <class PointRange, class Traits>
+template <class ConcurrencyTag = CGAL::Parallel_if_available_tag, class PointRange, class Traits>
 void assign_points_to_skeleton(const PointRange& points, const std::vector<bool>& is_outlier,
                                Skeleton_graph<Traits>& skeleton)
 {
@@ -61,16 +67,18 @@ void assign_points_to_skeleton(const PointRange& points, const std::vector<bool>
   Tree tree(ids.begin(), ids.end(), typename Tree::Splitter(), Search_traits(vpm));
   tree.build();
   const Distance distance(vpm);
-  std::size_t i = 0;
-  for(const Point_3& p : points)
-  {
+  std::vector<std::size_t> nearest_vertex(n);
+  const auto first = points.begin();
+  internal::for_each_index<ConcurrencyTag>(n, [&](std::size_t i) {
     if(is_outlier.empty() || !is_outlier[i])
     {
-      Search search(tree, p, 1, 0, true, distance);
-      skeleton[search.begin()->first].points.push_back(i);
+      Search search(tree, *(first + i), 1, 0, true, distance);
+      nearest_vertex[i] = search.begin()->first;
     }
-    ++i;
-  }
+  }, 4096);
+  for(std::size_t i = 0; i < n; ++i)
+    if(is_outlier.empty() || !is_outlier[i])
+      skeleton[nearest_vertex[i]].points.push_back(i);
 }
 
 } // namespace DF_L1

@@ -7,18 +7,18 @@
 /// Stage 0a: outlier points far from every other sample, flagged before voxelization.
 
 #include <CGAL/DF_L1_skeleton/errors.h>
-#include <CGAL/DF_L1_skeleton/internal/indexed_kd_tree.h>
 #include <CGAL/DF_L1_skeleton/internal/parallel_for.h>
 #include <CGAL/DF_L1_skeleton/internal/point_range.h>
+#include <CGAL/DF_L1_skeleton/internal/uniform_grid.h>
 
 #include <CGAL/Named_function_parameters.h>
-#include <CGAL/Orthogonal_incremental_neighbor_search.h>
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/tags.h>
 
 #include <algorithm>
 #include <cmath>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -82,62 +82,36 @@ std::vector<bool> flag_sparse_outliers(const PointRange& points, unsigned int k 
                                        double local_ratio = 2)
 {
   typedef Point_set_processing_3_np_helper<const PointRange, NamedParameters> NP_helper;
-  typedef typename NP_helper::Geom_traits Traits;
-  typedef typename Traits::Point_3 Point_3;
-  typedef internal::Indexed_kd_tree<Traits> Kd_tree;
-  typedef typename Kd_tree::K_neighbor_search Search;
-  typedef CGAL::Orthogonal_incremental_neighbor_search<typename Kd_tree::Search_traits, typename Kd_tree::Distance,
-                                                       typename Kd_tree::Tree::Splitter, typename Kd_tree::Tree>
-    Incremental_search;
 
   if(k < 1 || !(ratio > 1) || !std::isfinite(ratio) || !(local_ratio > 1))
     throw Invalid_input("outlier points: k must be positive, ratio a finite number > 1 and local_ratio > 1");
   const auto point_map = NP_helper::get_const_point_map(points, np);
   internal::checked_bbox(points, point_map, "outlier points");
-  std::vector<Point_3> xyz;
-  for(const auto& value : points)
-    xyz.push_back(get(point_map, value));
+  const std::vector<std::array<double, 3>> xyz = internal::to_xyz(points, point_map);
   const std::size_t n = xyz.size();
   std::vector<bool> flags(n, false);
   if(n <= k + 1)
     return flags;
 
-  const Kd_tree kd_tree(xyz);
-  const auto& tree = kd_tree.tree();
-  const auto& distance = kd_tree.distance();
-  const std::vector<std::size_t>& ids = kd_tree.indices();
+  const internal::Uniform_grid grid(xyz, 0); // cells for k-nearest searches
 
   // kth[i]: distance to the k-th nearest unflagged point; neighbours[i*k..]: those k points.
   std::vector<double> kth(n);
   std::vector<std::size_t> neighbours(n * k);
   std::vector<char> flagged(n, 0); // a copy of flags that threads may read
-  const auto measure = [&](std::size_t i) {
-    std::size_t found = 0;
-    double d2 = 0;
-    const auto take = [&](std::size_t j, double squared) {
-      if(j == i || flagged[j] || found == k) // found == k: duplicates of the point
-        return;
-      neighbours[i * k + found++] = j;
-      d2 = squared;
-    };
-    { // the point itself comes first
-      Search search(tree, xyz[i], k + 1, 0, true, distance);
-      for(const auto& neighbour : search)
-        take(neighbour.first, CGAL::to_double(neighbour.second));
-    }
-    if(found < k) // some are flagged: an incremental search skips them without a new tree
-    {
-      found = 0;
-      Incremental_search search(tree, xyz[i], 0, true, distance);
-      for(auto it = search.begin(); it != search.end() && found < k; ++it)
-        take(it->first, CGAL::to_double(it->second));
-    }
-    for(; found < k; ++found) // fewer than k unflagged points left
-      neighbours[i * k + found] = i;
-    kth[i] = std::sqrt(d2);
+  const auto measure = [&](std::size_t i, bool none_flagged) {
+    std::vector<std::pair<double, std::size_t>> nearest;
+    if(none_flagged) // the first pass: flagged is not read (at random places, on a large cloud)
+      grid.k_nearest(xyz[i], k, [&](std::size_t j) { return j != i; }, nearest);
+    else
+      grid.k_nearest(xyz[i], k, [&](std::size_t j) { return j != i && !flagged[j]; }, nearest);
+    for(std::size_t m = 0; m < k; ++m) // fewer than k unflagged points left: the point itself
+      neighbours[i * k + m] = m < nearest.size() ? nearest[m].second : i;
+    kth[i] = nearest.empty() ? 0 : std::sqrt(nearest.back().first);
   };
-  const std::vector<std::size_t> query_order = kd_tree.hilbert_order();
-  internal::for_each_index<ConcurrencyTag>(n, [&](std::size_t q) { measure(query_order[q]); });
+  // in cell order: consecutive searches read the same cells
+  const std::vector<std::size_t>& query_order = grid.indices_by_cell();
+  internal::for_each_index<ConcurrencyTag>(n, [&](std::size_t q) { measure(query_order[q], true); });
   std::vector<double> sorted = kth;
   std::nth_element(sorted.begin(), sorted.begin() + n / 2, sorted.end());
   const double threshold = ratio * sorted[n / 2];
@@ -154,7 +128,8 @@ std::vector<bool> flag_sparse_outliers(const PointRange& points, unsigned int k 
   // Only the points that lost a neighbour to the last pass need a new test: removing
   // points makes the distances of the others grow or stay, and a point whose own
   // distance stays is not flagged by its neighbours' growing.
-  std::vector<std::size_t> candidates = ids;
+  // first all the points, in cell order: the tests of neighbours read the same distances
+  std::vector<std::size_t> candidates = query_order;
   std::vector<char> verdict(n, 0);
   std::size_t remaining = n;
   while(!candidates.empty())
@@ -174,7 +149,7 @@ std::vector<bool> flag_sparse_outliers(const PointRange& points, unsigned int k 
       if(!flagged[i] && std::any_of(neighbours.begin() + i * k, neighbours.begin() + (i + 1) * k,
                                     [&](std::size_t j) { return flagged[j] != 0; }))
         candidates.push_back(i);
-    internal::for_each_index<ConcurrencyTag>(candidates.size(), [&](std::size_t c) { measure(candidates[c]); });
+    internal::for_each_index<ConcurrencyTag>(candidates.size(), [&](std::size_t c) { measure(candidates[c], false); });
   }
   return flags;
 }

@@ -431,13 +431,15 @@ private:
       const Vec3 d = s_.end_direction(e);
       std::size_t best = npos;
       double best_d = 0;
+      const double reach = join_radius(e);
       for(std::size_t b = 0; b < n; ++b)
       {
         if(s_.role[b] != Sample_role::BRANCH || b == e || s_.is_end(b))
           continue;
         const double dist = distance(s_.x[b], s_.x[e]);
-        // within 60 degrees; the walk along the branches last, for the few samples in reach
-        if(dist >= join_radius(e) || dot(s_.x[b] - s_.x[e], d) < 0.5 * dist || same_branch(e, b))
+        if(dist >= reach || dot(s_.x[b] - s_.x[e], d) < 0.5 * dist) // within 60 degrees
+          continue;
+        if(same_branch(e, b)) // last: a walk over the branch, where the tests above are a few operations
           continue;
         if(best == npos || dist < best_d)
         {

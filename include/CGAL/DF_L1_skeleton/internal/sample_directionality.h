@@ -76,18 +76,17 @@ Directionality compute_directionality(const std::vector<Vec3>& samples, const st
   for_each_index<ConcurrencyTag>(m, [&](std::size_t i) {
     if(!active[i])
       return;
+    // the 6 nearest within the support radius (a k-nearest search: once the radii have
+    // grown, the ball holds most of the samples)
     std::vector<std::pair<double, std::size_t>> near;
-    grid.for_each_in_ball(samples[i], radius[i], [&](std::size_t j, double d2) {
-      if(active[j] && j != i)
-        near.emplace_back(d2, j);
-      return true;
-    });
-    const std::size_t k = (std::min)(near.size(), std::size_t(6));
-    std::partial_sort(near.begin(), near.begin() + k, near.end());
+    grid.k_nearest(samples[i], 6, [&](std::size_t j) { return active[j] && j != i; }, near);
+    const double r2 = radius[i] * radius[i];
+    while(!near.empty() && near.back().first > r2)
+      near.pop_back();
     double s = raw[i];
-    for(std::size_t a = 0; a < k; ++a)
-      s += raw[near[a].second];
-    d.sigma[i] = s / double(k + 1);
+    for(const auto& neighbour : near)
+      s += raw[neighbour.second];
+    d.sigma[i] = s / double(near.size() + 1);
   });
   return d;
 }

@@ -7,6 +7,9 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <cstdlib>
+#include <limits>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -16,12 +19,17 @@ namespace internal {
 // Points bucketed in cubic cells (counting sort, so building is O(N) and the order of the
 // points inside a cell is their input order: queries are deterministic). For radius
 // queries whose radius is comparable to the cell size this beats a kd-tree by a wide
-// margin, which is the case of the fixed-radius searches of this package.
+// margin, which is the case of the fixed-radius searches of this package. The grid keeps
+// a copy of the coordinates in cell order, so that a query reads them one after the
+// other instead of at random places of the input (the input order of a scan or a
+// generator is often random in space).
 class Uniform_grid
 {
 public:
+  // `cell_size` <= 0: the finest cells allowed (about 4 per point over the bounding box),
+  // which suit k-nearest searches for k from 6 to 24 on a sampled surface (about one
+  // k-th neighbour distance; measured on the noisy stick figure).
   Uniform_grid(const std::vector<std::array<double, 3>>& points, double cell_size)
-    : points_(points)
   {
     std::array<double, 3> hi;
     lo_ = hi = points.empty() ? std::array<double, 3>{{0, 0, 0}} : points[0];
@@ -32,8 +40,12 @@ public:
         hi[a] = (std::max)(hi[a], p[a]);
       }
     // Never more cells than about 4 per point: a tiny radius must not allocate a huge grid.
-    cell_ = cell_size > 0 ? cell_size : 1;
     const double max_cells = 4.0 * double(points.size()) + 64;
+    cell_ = cell_size;
+    if(!(cell_size > 0))
+      cell_ = (std::max)({hi[0] - lo_[0], hi[1] - lo_[1], hi[2] - lo_[2]}) / max_cells;
+    if(!(cell_ > 0))
+      cell_ = 1; // all the points at one place
     for(;;)
     {
       double cells = 1;
@@ -58,6 +70,9 @@ public:
     std::vector<std::size_t> fill(start_.begin(), start_.end() - 1);
     for(std::size_t i = 0; i < points.size(); ++i)
       order_[fill[cell_of[i]]++] = i;
+    sorted_.resize(points.size());
+    for(std::size_t s = 0; s < points.size(); ++s)
+      sorted_[s] = points[order_[s]];
   }
 
   double cell_size() const { return cell_; }
@@ -95,6 +110,93 @@ public:
     return enough;
   }
 
+  // The `k` points nearest to `q` among those for which `keep(index)` holds, into
+  // `nearest` as (squared distance, index) pairs sorted by distance, ties by index (fewer
+  // than `k` when fewer are kept). The cells are searched in rings of growing Chebyshev
+  // distance around the cell of `q`, skipping those farther than the k-th point found so
+  // far, until the k-th distance is below the distance to every cell not searched yet.
+  // The squared distance is (q - p)^2 summed over x, y, z in this order, as CGAL's
+  // kd-tree computes it, so that the neighbours and their distances are those of a
+  // kd-tree search up to the order of exactly tied points.
+  template <class Keep>
+  void k_nearest(const std::array<double, 3>& q, std::size_t k, const Keep& keep,
+                 std::vector<std::pair<double, std::size_t>>& nearest) const
+  {
+    nearest.clear();
+    if(k == 0)
+      return;
+    std::array<double, 3> t; // q in cell units
+    std::array<int, 3> c;    // the cell of q
+    for(int a = 0; a < 3; ++a)
+    {
+      t[a] = (q[a] - lo_[a]) / cell_;
+      c[a] = std::clamp(int(std::floor(t[a])), 0, dims_[a] - 1);
+    }
+    // The distance from q to the cells of coordinate i along axis a, in cell units; a
+    // millionth of a cell is taken off for the rounding of t.
+    const auto gap = [&](int a, int i) {
+      const double g = i > c[a] ? i - t[a] : i < c[a] ? t[a] - (i + 1) : 0;
+      return (std::max)(g - 1e-6, 0.0);
+    };
+    const double cell2 = cell_ * cell_;
+    // Whether a point at squared distance d2 (cell units) may be among the k nearest.
+    const auto may_hold = [&](double d2) { return nearest.size() < k || d2 * cell2 <= nearest.back().first; };
+    const auto visit = [&](int i, int j, int l) {
+      const std::size_t cell = cell_index({{i, j, l}});
+      for(std::size_t s = start_[cell]; s < start_[cell + 1]; ++s)
+      {
+        const std::array<double, 3>& p = sorted_[s];
+        double d2 = (q[0] - p[0]) * (q[0] - p[0]);
+        d2 += (q[1] - p[1]) * (q[1] - p[1]);
+        d2 += (q[2] - p[2]) * (q[2] - p[2]);
+        const std::pair<double, std::size_t> found(d2, order_[s]);
+        if((nearest.size() == k && !(found < nearest.back())) || !keep(found.second))
+          continue;
+        if(nearest.size() < k)
+          nearest.push_back(found);
+        std::size_t m = nearest.size() - 1; // sorted into place from the back
+        for(; m > 0 && found < nearest[m - 1]; --m)
+          nearest[m] = nearest[m - 1];
+        nearest[m] = found;
+      }
+    };
+    for(int r = 0;; ++r)
+    {
+      std::array<int, 3> lo, hi;
+      for(int a = 0; a < 3; ++a)
+      {
+        lo[a] = (std::max)(c[a] - r, 0);
+        hi[a] = (std::min)(c[a] + r, dims_[a] - 1);
+      }
+      for(int l = lo[2]; l <= hi[2]; ++l)
+        for(int j = lo[1]; j <= hi[1]; ++j)
+        {
+          const double gz = gap(2, l), gy = gap(1, j), row = gz * gz + gy * gy;
+          if(!may_hold(row))
+            continue;
+          const bool face = std::abs(l - c[2]) == r || std::abs(j - c[1]) == r; // the whole row is in the ring
+          for(int i = face ? lo[0] : c[0] - r; i <= hi[0]; i += face ? 1 : 2 * r)
+          {
+            const double gx = gap(0, i);
+            if(i >= 0 && may_hold(row + gx * gx))
+              visit(i, j, l);
+          }
+        }
+      // The cells not searched yet lie beyond the faces of the searched box that are
+      // inside the grid.
+      double beyond = std::numeric_limits<double>::infinity();
+      for(int a = 0; a < 3; ++a)
+      {
+        if(c[a] - r > 0)
+          beyond = (std::min)(beyond, gap(a, c[a] - r - 1));
+        if(c[a] + r < dims_[a] - 1)
+          beyond = (std::min)(beyond, gap(a, c[a] + r + 1));
+      }
+      if(beyond == std::numeric_limits<double>::infinity() || !may_hold(beyond * beyond))
+        return;
+    }
+  }
+
 private:
   // Calls f(cell index) for every cell meeting the bounding box of the ball; f returns
   // false to stop.
@@ -123,7 +225,7 @@ private:
   {
     for(std::size_t s = start_[c]; s < start_[c + 1]; ++s)
     {
-      const std::array<double, 3>& p = points_[order_[s]];
+      const std::array<double, 3>& p = sorted_[s];
       const double d2 = (p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) + (p[2] - q[2]) * (p[2] - q[2]);
       if(d2 <= r2 && !f(order_[s], d2))
         return false;
@@ -143,11 +245,11 @@ private:
     return (std::size_t(c[2]) * dims_[1] + c[1]) * dims_[0] + c[0];
   }
 
-  const std::vector<std::array<double, 3>>& points_;
   std::array<double, 3> lo_;
   std::array<int, 3> dims_ = {{1, 1, 1}};
   double cell_ = 1;
   std::vector<std::size_t> start_, order_;
+  std::vector<std::array<double, 3>> sorted_; // the points in the order of order_
 };
 
 } // namespace internal
