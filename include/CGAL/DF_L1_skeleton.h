@@ -242,7 +242,7 @@ public:
     initial_ = std::make_unique<Initial_skeleton>(DF_L1::extract_initial_skeleton(
       *field_, parameters::thinning_coefficient(thinning_coefficient_,
                parameters::spur_length_ratio(spur_length_ratio_, parameters::thin_parts(!denoised_, parameters::occupied_depth(denoised_))))));
-    DF_L1::assign_points_to_skeleton(points_, outliers_, initial_->graph);
+    DF_L1::assign_points_to_skeleton<ConcurrencyTag>(points_, outliers_, initial_->graph);
   }
 
   /// Contracts samples of the kept and added points onto the skeleton
@@ -272,7 +272,7 @@ public:
       return;
     contract();
     skeleton_ = std::make_unique<Skeleton>(DF_L1::build_skeleton_graph(*contracted_, *field_, *initial_));
-    DF_L1::assign_points_to_skeleton(points_, outliers_, *skeleton_);
+    DF_L1::assign_points_to_skeleton<ConcurrencyTag>(points_, outliers_, *skeleton_);
   }
 
   /// Runs every stage that has not run and copies the final skeleton into `skeleton`.

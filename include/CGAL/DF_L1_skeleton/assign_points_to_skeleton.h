@@ -25,7 +25,9 @@ namespace DF_L1 {
 
 /// \ingroup PkgDFL1SkeletonRef
 /// Assigns every input point that is not an outlier to its nearest skeleton vertex
-/// (ties go to the lower vertex index), replacing the vertices' `points` lists. Each
+/// (between vertices at exactly the same distance, the one the kd-tree search meets
+/// first: the tree is built from the vertices in index order, so the choice is the same
+/// on every run), replacing the vertices' `points` lists. Each
 /// non-outlier point then belongs to exactly one vertex. The nearest vertices are found
 /// in parallel and the lists filled in point order, so the result does not depend on the
 /// number of threads.
