@@ -17,6 +17,7 @@
 
 #include "bench_record.h"
 #include "bench_report.h"
+#include "heap_settings.h"
 
 #include "support/skeleton_quality.h"
 #include "support/synthetic_shapes.h"
@@ -431,6 +432,7 @@ void usage(std::ostream& os)
 
 int main(int argc, char** argv)
 {
+  df_l1_tool::keep_large_buffers_on_heap(); // as the tool does, so that the figures are the tool's
   try
   {
     std::vector<std::string> a(argv + 1, argv + argc);

@@ -4,6 +4,7 @@
 // df_l1_skeleton: the command-line front end of the package.
 // Exit status: 0 success, 1 bad input or failed output, 2 bad usage.
 
+#include "heap_settings.h"
 #include "options.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -17,9 +18,6 @@
 #include <tbb/global_control.h>
 
 #include <sys/resource.h>
-#ifdef __GLIBC__
-#include <malloc.h>
-#endif
 
 #include <algorithm>
 #include <chrono>
@@ -558,13 +556,7 @@ int run(const Settings& s)
 
 int main(int argc, char** argv)
 {
-#ifdef __GLIBC__
-  // The stages allocate and free many grid-sized buffers (megabytes each). glibc serves
-  // them with mmap and unmaps them on free, so every new buffer page-faults in again:
-  // keeping them on the heap for reuse saved about 5 % of the run.
-  mallopt(M_MMAP_THRESHOLD, 1 << 30);
-  mallopt(M_TRIM_THRESHOLD, 1 << 30);
-#endif
+  df_l1_tool::keep_large_buffers_on_heap();
   Settings settings;
   bool help = false, version = false;
   try
