@@ -15,7 +15,6 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
-#include <deque>
 #include <limits>
 #include <vector>
 
@@ -272,10 +271,9 @@ private:
     grids_.emplace_back(levels_.back().centroid, 4 * cell);
   }
 
-  // deques: a grid refers to its level's centroids, which must not move when levels are added
-  std::deque<Aggregated_points> levels_;
+  std::vector<Aggregated_points> levels_;
   std::vector<double> cells_;
-  std::deque<Uniform_grid> grids_;
+  std::vector<Uniform_grid> grids_; // each with its own copy of its level's centroids
 };
 
 // One fixed-point iteration of Eq. 8 for every free sample, all from the previous
