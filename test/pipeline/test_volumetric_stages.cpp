@@ -119,6 +119,61 @@ TEST_CASE("distance field: the same for 1 and 2 threads", "[distance][determinis
   CHECK(sequential.values == parallel.values);
 }
 
+TEST_CASE("distance transform: exact against brute force, with and without a bound", "[distance]")
+{
+  namespace I = CGAL::DF_L1::internal;
+  // Wider than one tile of the y and z passes (256 rows), and small along y and z.
+  const std::array<int, 3> dims = {{270, 7, 9}};
+  const std::size_t n = std::size_t(dims[0]) * dims[1] * dims[2];
+  auto coordinates = [&](std::size_t v) {
+    return std::array<long, 3>{{long(v % dims[0]), long(v / dims[0] % dims[1]), long(v / dims[0] / dims[1])}};
+  };
+  std::uint32_t state = 12345;
+  auto next = [&]() { return state = state * 1664525u + 1013904223u; };
+  for(int trial = 0; trial < 6; ++trial)
+  {
+    // Sites (0) and, from trial 2 on, starting values: positive, and negative as in the
+    // power distance of balls. Integers, so that the transform is exact in floats.
+    std::vector<float> start(n, I::EDT_INFINITY);
+    for(std::size_t v = 0; v < n; ++v)
+    {
+      const std::uint32_t r = next() >> 8;
+      if(r % 400 == 0)
+        start[v] = 0;
+      else if(trial >= 2 && r % 400 == 1)
+        start[v] = float(int(next() >> 8) % 41 - 20);
+    }
+    if(trial == 1) // one row of sites only: most rows stay empty
+    {
+      std::fill(start.begin(), start.end(), I::EDT_INFINITY);
+      for(int i = 0; i < dims[0]; ++i)
+        start[std::size_t(i) + dims[0] * 3] = 0;
+    }
+    const float bound = trial % 2 == 0 ? I::EDT_INFINITY : trial == 5 ? 0.f : 30.f;
+    std::vector<float> exact(n, I::EDT_INFINITY);
+    for(std::size_t w = 0; w < n; ++w)
+    {
+      if(start[w] > bound || start[w] >= I::EDT_INFINITY)
+        continue;
+      const auto b = coordinates(w);
+      for(std::size_t u = 0; u < n; ++u)
+      {
+        const auto a = coordinates(u);
+        const long d2 = (a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]);
+        exact[u] = (std::min)(exact[u], start[w] + float(d2));
+      }
+    }
+    for(float& d : exact)
+      d = d > bound ? I::EDT_INFINITY : d;
+    std::vector<float> sequential = start, parallel = start;
+    I::squared_euclidean_distance_transform<CGAL::Sequential_tag>(sequential, dims, bound);
+    I::squared_euclidean_distance_transform<CGAL::Parallel_if_available_tag>(parallel, dims, bound);
+    INFO("trial " << trial);
+    CHECK(sequential == exact);
+    CHECK(parallel == exact);
+  }
+}
+
 namespace {
 
 struct Outlier_result

@@ -97,48 +97,83 @@ inline void squared_distance_to_sites_1d(const float* f, float* d, int n)
   }
 }
 
-// What a row needs: 0 when every f[q] is EDT_INFINITY (nothing), 1 when every f[q] is 0
-// or above `limit` (the two scans), 2 otherwise (the lower envelope). No early exit: the
-// loop vectorizes.
+// What a row needs: 0 when the transform leaves it unchanged (every f[q] is
+// EDT_INFINITY, or every f[q] is 0: after the first pass, most rows of a grid whose
+// sites are the exterior), 1 when every f[q] is 0 or above `limit` (the two scans), 2
+// otherwise (the lower envelope). No early exit: the loop vectorizes.
 inline int row_kind(const float* f, int n, float limit)
 {
-  int finite = 0, other = 0;
+  int finite = 0, zero = 0, other = 0;
   for(int q = 0; q < n; ++q)
   {
     finite += f[q] < EDT_INFINITY;
+    zero += f[q] == 0;
     other += (f[q] != 0) & (f[q] <= limit);
   }
-  return other > 0 ? 2 : finite > 0 ? 1 : 0;
+  return other > 0 ? 2 : finite > 0 && zero < n ? 1 : 0;
 }
 
+// Scratch of the 1D transforms, one per thread.
+struct Transform_scratch
+{
+  std::vector<int> v;
+  std::vector<double> z, h;
+  std::vector<float> row, tile;
+};
+
+// Transforms, in place, the `count` rows of length n stored one after the other from
+// `rows`, leaving out the values above `limit`; returns whether any row changed.
+inline bool transform_rows(float* rows, std::size_t count, std::size_t n, float limit, Transform_scratch& s)
+{
+  bool changed = false;
+  s.row.resize(n);
+  for(std::size_t r = 0; r < count; ++r)
+  {
+    float* f = rows + r * n;
+    const int kind = row_kind(f, int(n), limit);
+    if(kind == 0)
+      continue;
+    changed = true;
+    std::copy(f, f + n, s.row.begin());
+    if(kind == 1)
+      squared_distance_to_sites_1d(s.row.data(), f, int(n));
+    else
+      squared_distance_transform_1d(s.row.data(), f, int(n), limit, s.v, s.z, s.h);
+    for(std::size_t q = 0; q < n; ++q)
+      f[q] = f[q] > limit ? EDT_INFINITY : f[q];
+  }
+  return changed;
+}
+
+// Calls f(task, scratch) for every task in [0, tasks), in parallel with a Parallel_tag.
 template <class ConcurrencyTag, class Function>
-void for_each_row(std::size_t rows, const Function& f)
+void for_each_task(std::size_t tasks, const Function& f)
 {
 #ifdef CGAL_LINKED_WITH_TBB
   if(std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value)
   {
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, rows, 64),
-                      [&](const tbb::blocked_range<std::size_t>& r) {
-                        std::vector<int> v;
-                        std::vector<double> z, h;
-                        std::vector<float> in, out;
-                        for(std::size_t row = r.begin(); row != r.end(); ++row)
-                          f(row, v, z, h, in, out);
-                      });
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, tasks), [&](const tbb::blocked_range<std::size_t>& r) {
+      Transform_scratch scratch;
+      for(std::size_t task = r.begin(); task != r.end(); ++task)
+        f(task, scratch);
+    });
     return;
   }
 #endif
-  std::vector<int> v;
-  std::vector<double> z, h;
-  std::vector<float> in, out;
-  for(std::size_t row = 0; row < rows; ++row)
-    f(row, v, z, h, in, out);
+  Transform_scratch scratch;
+  for(std::size_t task = 0; task < tasks; ++task)
+    f(task, scratch);
 }
 
 // In place: on input 0 at sites and EDT_INFINITY elsewhere; on output the exact squared
 // Euclidean distance (in voxel units) to the nearest site. One separable pass per axis,
 // each parallel over the independent rows of that axis; the result does not depend on
 // the number of threads.
+// The passes along y and z copy a tile of up to 256 rows, consecutive along x (a whole
+// row of the grid up to V = 256), into a buffer, reading a run of the row per step along
+// the axis: read one row at a time, every step of a z row fell on another page (nx * ny
+// floats on), and those strided reads were most of the cost of the transform (with
+// tiles, the 7 transforms of a 35k-point cloud at V = 100 take 36 % less time).
 // With a `bound` (>= 0), for callers that only compare the distances with a threshold,
 // the distances above it become EDT_INFINITY: a value above the bound after a pass only
 // grows in the next ones, so it is left out of them, and the rows far from every site
@@ -149,34 +184,33 @@ void squared_euclidean_distance_transform(std::vector<float>& grid, const std::a
                                           float bound = EDT_INFINITY)
 {
   const float limit = (std::min)(bound, std::nextafter(EDT_INFINITY, 0.f)); // EDT_INFINITY is left out
-  const std::size_t nx = dims[0], ny = dims[1];
-  const std::size_t strides[3] = {1, nx, nx * ny};
-  for(int axis = 0; axis < 3; ++axis)
+  const std::size_t nx = dims[0], ny = dims[1], nz = dims[2];
+  constexpr std::size_t rows_per_task = 64, tile_width = 256;
+
+  // Along x, the rows are contiguous.
+  for_each_task<ConcurrencyTag>((ny * nz + rows_per_task - 1) / rows_per_task, [&](std::size_t task,
+                                                                                 Transform_scratch& s) {
+    const std::size_t first = task * rows_per_task, count = (std::min)(rows_per_task, ny * nz - first);
+    transform_rows(grid.data() + first * nx, count, nx, limit, s);
+  });
+  for(int axis = 1; axis < 3; ++axis)
   {
-    const std::size_t n = dims[axis];
-    const std::size_t stride = strides[axis];
-    // Consecutive rows along the fastest other axis: the strided reads and writes of the
-    // passes along y and z then share cache lines between neighbouring rows.
-    const int a1 = axis == 0 ? 1 : 0, a2 = 3 - axis - a1;
-    const std::size_t n1 = dims[a1];
-    for_each_row<ConcurrencyTag>(n1 * dims[a2], [&](std::size_t row, std::vector<int>& v,
-                                                    std::vector<double>& z, std::vector<double>& h,
-                                                    std::vector<float>& in,
-                                                    std::vector<float>& out) {
-      const std::size_t start = (row % n1) * strides[a1] + (row / n1) * strides[a2];
-      in.resize(n);
-      out.resize(n);
+    const std::size_t n = dims[axis], stride = axis == 1 ? nx : nx * ny;
+    const std::size_t other_stride = axis == 1 ? nx * ny : nx; // of the third axis
+    const std::size_t tiles_per_line = (nx + tile_width - 1) / tile_width;
+    for_each_task<ConcurrencyTag>(tiles_per_line * (axis == 1 ? nz : ny), [&](std::size_t task,
+                                                                              Transform_scratch& s) {
+      const std::size_t x0 = (task % tiles_per_line) * tile_width, width = (std::min)(tile_width, nx - x0);
+      float* corner = grid.data() + (task / tiles_per_line) * other_stride + x0;
+      s.tile.resize(width * n);
       for(std::size_t q = 0; q < n; ++q)
-        in[q] = grid[start + q * stride];
-      const int kind = row_kind(in.data(), int(n), limit);
-      if(kind == 0)
+        for(std::size_t c = 0; c < width; ++c)
+          s.tile[c * n + q] = corner[q * stride + c];
+      if(!transform_rows(s.tile.data(), width, n, limit, s))
         return;
-      if(kind == 1)
-        squared_distance_to_sites_1d(in.data(), out.data(), int(n));
-      else
-        squared_distance_transform_1d(in.data(), out.data(), int(n), limit, v, z, h);
       for(std::size_t q = 0; q < n; ++q)
-        grid[start + q * stride] = out[q] > limit ? EDT_INFINITY : out[q];
+        for(std::size_t c = 0; c < width; ++c)
+          corner[q * stride + c] = s.tile[c * n + q];
     });
   }
 }
