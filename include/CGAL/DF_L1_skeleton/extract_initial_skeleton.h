@@ -11,6 +11,7 @@
 #include <CGAL/DF_L1_skeleton/errors.h>
 #include <CGAL/DF_L1_skeleton/internal/box_sum.h>
 #include <CGAL/DF_L1_skeleton/internal/curve_thinning.h>
+#include <CGAL/DF_L1_skeleton/internal/parallel_for.h>
 #include <CGAL/DF_L1_skeleton/internal/voxel_components.h>
 #include <CGAL/DF_L1_skeleton/internal/voxel_curve_graph.h>
 #include <CGAL/DF_L1_skeleton/internal/voxel_morphology.h>
@@ -147,6 +148,62 @@ Thin_parts thin_parts(const Distance_field<Traits>& df, double margin, double re
     result.solid[v] = occupied[v] && near[v] <= (margin + 1) * (margin + 1);
   result.depth = occupied_depth(df);
   return result;
+}
+
+// The ridge voxels of Eq. 2 in `values`: at least two voxels deep, and deeper by TP_s
+// than the mean over their 26, 124 and 342 neighbours (s = 1, 2, 3), where TP_s is c
+// times the mean of that difference over the voxels of positive value. Fills
+// `result.voxels`, `result.points`, `result.thinning_parameters` and the flags `in`;
+// false when no voxel has a positive value.
+template <class Traits>
+bool ridge_voxels(const Distance_field<Traits>& field, const std::vector<float>& values, double c,
+                  Initial_skeleton<Traits>& result, std::vector<char>& in)
+{
+  const Box_sum sums(values, field.dims);
+  const int radii[3] = {1, 2, 3};
+  const double counts[3] = {26, 124, 342};
+
+  // Mean of DT - MNT_k over the interior voxels, for the three thresholds.
+  double mean_gap[3] = {0, 0, 0};
+  std::size_t interior = 0;
+  for(int k = 0; k < field.dims[2]; ++k)
+    for(int j = 0; j < field.dims[1]; ++j)
+      for(int i = 0; i < field.dims[0]; ++i)
+      {
+        const float dt = values[field.index(i, j, k)];
+        if(dt <= 0)
+          continue;
+        ++interior;
+        for(int s = 0; s < 3; ++s)
+          mean_gap[s] += dt - (sums.cube(i, j, k, radii[s]) - dt) / counts[s];
+      }
+  if(interior == 0)
+    return false;
+  for(int s = 0; s < 3; ++s)
+    result.thinning_parameters[s] = c * std::abs(mean_gap[s] / double(interior));
+
+  in.assign(field.size(), 0);
+  for(int k = 0; k < field.dims[2]; ++k)
+    for(int j = 0; j < field.dims[1]; ++j)
+      for(int i = 0; i < field.dims[0]; ++i)
+      {
+        const std::size_t v = field.index(i, j, k);
+        const float dt = values[v];
+        // One voxel deep is what a flat, linear or noisy sheet of points encloses
+        // between its samples: no volume, no skeleton.
+        if(dt < 2)
+          continue;
+        bool ridge = true;
+        for(int s = 0; s < 3 && ridge; ++s)
+          ridge = (sums.cube(i, j, k, radii[s]) - dt) / counts[s] < dt - result.thinning_parameters[s];
+        if(ridge)
+        {
+          in[v] = 1;
+          result.voxels.push_back(v);
+          result.points.push_back(field.center(v));
+        }
+      }
+  return true;
 }
 
 // Maxima of the distance field over blocks of 4x4x4 voxels, so that the maximum over a
@@ -381,52 +438,23 @@ Initial_skeleton<Traits> extract_initial_skeleton(const Distance_field<Traits>& 
       d = (std::max)(0.f, d - 1);
   }
   const std::vector<float>& values = in_occupied ? occupied_values : field.values;
-  const internal::Box_sum sums(values, field.dims);
-  const int radii[3] = {1, 2, 3};
-  const double counts[3] = {26, 124, 342};
-
-  // Mean of DT - MNT_k over the interior voxels, for the three thresholds.
-  double mean_gap[3] = {0, 0, 0};
-  std::size_t interior = 0;
-  for(int k = 0; k < field.dims[2]; ++k)
-    for(int j = 0; j < field.dims[1]; ++j)
-      for(int i = 0; i < field.dims[0]; ++i)
-      {
-        const float dt = values[field.index(i, j, k)];
-        if(dt <= 0)
-          continue;
-        ++interior;
-        for(int s = 0; s < 3; ++s)
-          mean_gap[s] += dt - (sums.cube(i, j, k, radii[s]) - dt) / counts[s];
-      }
-  if(interior == 0)
+  // Three independent reads of the field: the ridge voxels, the solid to thin and the
+  // thin parts; the thin parts (most of the time of this stage) run beside the other two.
+  std::vector<char> in, curves;
+  internal::Thin_parts thin;
+  bool has_interior = false;
+  internal::run_both<CGAL::Parallel_if_available_tag>(
+    [&] {
+      has_interior = internal::ridge_voxels(field, values, c, result, in);
+      if(has_interior)
+        curves = internal::shape_volume(field);
+    },
+    [&] {
+      if(with_thin_parts)
+        thin = internal::thin_parts(field, 2.0, 4.0);
+    });
+  if(!has_interior)
     return result;
-  for(int s = 0; s < 3; ++s)
-    result.thinning_parameters[s] = c * std::abs(mean_gap[s] / double(interior));
-
-  std::vector<char> in(field.size(), 0);
-  for(int k = 0; k < field.dims[2]; ++k)
-    for(int j = 0; j < field.dims[1]; ++j)
-      for(int i = 0; i < field.dims[0]; ++i)
-      {
-        const std::size_t v = field.index(i, j, k);
-        const float dt = values[v];
-        // One voxel deep is what a flat, linear or noisy sheet of points encloses
-        // between its samples: no volume, no skeleton.
-        if(dt < 2)
-          continue;
-        bool ridge = true;
-        for(int s = 0; s < 3 && ridge; ++s)
-          ridge = (sums.cube(i, j, k, radii[s]) - dt) / counts[s] < dt - result.thinning_parameters[s];
-        if(ridge)
-        {
-          in[v] = 1;
-          result.voxels.push_back(v);
-          result.points.push_back(field.center(v));
-        }
-      }
-
-  std::vector<char> curves = internal::shape_volume(field);
   if(in_occupied)
     for(std::size_t v = 0; v < field.size(); ++v)
       curves[v] = curves[v] || values[v] > 0;
@@ -436,10 +464,8 @@ Initial_skeleton<Traits> extract_initial_skeleton(const Distance_field<Traits>& 
   // one (about the field plus the boundary layer elsewhere): their curves then follow
   // their middle, and end only at a voxel as deep as the others around it.
   std::vector<float> depth = values;
-  internal::Thin_parts thin;
   if(with_thin_parts)
   {
-    thin = internal::thin_parts(field, 2.0, 4.0);
     for(std::size_t v = 0; v < field.size(); ++v)
       if(thin.solid[v])
       {

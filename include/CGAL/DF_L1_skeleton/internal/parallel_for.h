@@ -8,6 +8,7 @@
 #ifdef CGAL_LINKED_WITH_TBB
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_invoke.h>
 #endif
 
 #include <cstddef>
@@ -34,6 +35,22 @@ void for_each_index(std::size_t n, const Function& f, std::size_t grain = 512)
 #endif
   for(std::size_t i = 0; i < n; ++i)
     f(i);
+}
+
+// f() and g(), at the same time with TBB when ConcurrencyTag is Parallel_tag; they must
+// not write what the other reads.
+template <class ConcurrencyTag, class F, class G>
+void run_both(const F& f, const G& g)
+{
+#ifdef CGAL_LINKED_WITH_TBB
+  if(std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value)
+  {
+    tbb::parallel_invoke(f, g);
+    return;
+  }
+#endif
+  f();
+  g();
 }
 
 } // namespace internal
