@@ -161,6 +161,45 @@ TEST_CASE("parity votes: a closed shell votes inside everywhere, an open face ke
   }
 }
 
+TEST_CASE("parity votes: the same votes and box means for 1 and 2 threads", "[voxels][determinism]")
+{
+  // A z slice of 2500 voxels: two chunks of the box mean's y and z passes.
+  DF_L1_test::internal::Rng rng(5);
+  const std::array<int, 3> dims = {{50, 50, 19}};
+  const std::size_t n = std::size_t(dims[0]) * dims[1] * dims[2];
+  std::vector<char> shell(n), used(n);
+  for(std::size_t v = 0; v < n; ++v)
+  {
+    shell[v] = rng.uniform() < 0.15;
+    used[v] = !shell[v];
+  }
+  const auto sequential = DF::internal::odd_crossing_votes<CGAL::Sequential_tag>(shell, dims);
+  const auto parallel = DF::internal::odd_crossing_votes<CGAL::Parallel_if_available_tag>(shell, dims);
+  CHECK(sequential == parallel);
+  CHECK(std::count(sequential.begin(), sequential.end(), std::uint8_t(0)) < std::ptrdiff_t(n)); // not all zero
+  const auto mean = DF::internal::box_mean_votes<CGAL::Parallel_if_available_tag>(sequential, used, dims, 2);
+  CHECK(DF::internal::box_mean_votes<CGAL::Sequential_tag>(sequential, used, dims, 2) == mean);
+  std::size_t wrong = 0;
+  for(int sample = 0; sample < 300; ++sample)
+  {
+    const int c[3] = {int(rng.index(50)), int(rng.index(50)), int(rng.index(19))};
+    double sum = 0, count = 0;
+    for(int k = c[2] - 2; k <= c[2] + 2; ++k)
+      for(int j = c[1] - 2; j <= c[1] + 2; ++j)
+        for(int i = c[0] - 2; i <= c[0] + 2; ++i)
+        {
+          const std::size_t v = (std::size_t(k) * dims[1] + j) * dims[0] + i;
+          if(i >= 0 && j >= 0 && k >= 0 && i < dims[0] && j < dims[1] && k < dims[2] && used[v])
+          {
+            sum += sequential[v];
+            ++count;
+          }
+        }
+    wrong += int(mean[(std::size_t(c[2]) * dims[1] + c[1]) * dims[0] + c[0]]) != int(std::lround(sum / count));
+  }
+  CHECK(wrong == 0);
+}
+
 TEST_CASE("parity votes: the shell's ball dilation equals the thresholded distance transform", "[voxels]")
 {
   // Random sites (sparse and dense, on the grid's faces too) and radii from none to a few

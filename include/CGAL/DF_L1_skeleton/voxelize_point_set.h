@@ -309,7 +309,8 @@ std::vector<char> voted_interior(const Grid_geometry<Traits>& g, const std::vect
   std::vector<char> off_shell(n);
   for(std::size_t v = 0; v < n; ++v)
     off_shell[v] = !shell[v];
-  const std::vector<std::uint8_t> mean = box_mean_votes(odd_crossing_votes(shell, g.dims), off_shell, g.dims, 2);
+  const std::vector<std::uint8_t> mean =
+    box_mean_votes<ConcurrencyTag>(odd_crossing_votes<ConcurrencyTag>(shell, g.dims), off_shell, g.dims, 2);
 
   // A region whose border lies mostly off the shell is not enclosed by the scan: a part
   // thinner than the shell is one run where the ray crosses two surfaces, and the space
