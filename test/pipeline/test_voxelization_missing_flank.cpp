@@ -200,6 +200,40 @@ TEST_CASE("parity votes: the same votes and box means for 1 and 2 threads", "[vo
   CHECK(wrong == 0);
 }
 
+TEST_CASE("voxels: growing the marked voxels through enterable ones equals a breadth-first walk", "[voxels]")
+{
+  DF_L1_test::internal::Rng rng(23);
+  for(int trial = 0; trial < 40; ++trial)
+  {
+    DF::Grid_geometry<Kernel> g;
+    g.dims = {{1 + int(rng.index(14)), 1 + int(rng.index(14)), 1 + int(rng.index(14))}};
+    const std::size_t n = g.size();
+    const double open = trial % 2 == 0 ? 0.35 : 0.7; // below and above percolation
+    std::vector<char> marked(n), enterable(n);
+    for(std::size_t v = 0; v < n; ++v)
+    {
+      marked[v] = rng.uniform() < 0.02;
+      enterable[v] = rng.uniform() < open;
+    }
+    std::vector<char> walked = marked;
+    std::vector<std::size_t> queue;
+    for(std::size_t v = 0; v < n; ++v)
+      if(marked[v])
+        queue.push_back(v);
+    for(std::size_t head = 0; head < queue.size(); ++head)
+      DF::internal::for_each_face_neighbour(g, queue[head], [&](std::size_t w) {
+        if(!walked[w] && enterable[w])
+        {
+          walked[w] = 1;
+          queue.push_back(w);
+        }
+      });
+    DF::internal::grow_face_connected(g, marked, [&](std::size_t w) { return enterable[w] != 0; });
+    INFO("trial " << trial);
+    CHECK(marked == walked);
+  }
+}
+
 TEST_CASE("parity votes: the shell's ball dilation equals the thresholded distance transform", "[voxels]")
 {
   // Random sites (sparse and dense, on the grid's faces too) and radii from none to a few

@@ -215,60 +215,86 @@ inline double median_kth_neighbour_distance(const std::vector<std::array<double,
 }
 
 // Marks every voxel that a 6-connected walk from the marked voxels reaches through
-// voxels where `can_enter` holds. The walk starts from the enterable voxels next to a
-// marked one: the marked voxels are often most of the grid (the exterior), and pushing
-// them all made the walk cost several passes over it. It fills whole runs along x at a
-// time (a scanline fill), and pushes one voxel per run of open voxels in the four
-// neighbouring rows: a per-voxel walk spent most of its time on the coordinates of
-// each voxel's neighbours (the exterior is most of the grid in drop_enclosed_exterior()).
+// voxels where `can_enter` holds: the 6-connected components of the marked and
+// enterable voxels that hold a marked voxel. The components are found on runs along x
+// (one union-find node per run, joined to the runs it overlaps in the rows below and
+// behind it), so that the cost is a scan of the grid and a few operations per run: the
+// exterior, most of the grid in drop_enclosed_exterior(), is a few runs per row. (A
+// scanline fill, before that a walk voxel by voxel, read each voxel several times.)
 template <class Traits, class CanEnter>
 void grow_face_connected(const Grid_geometry<Traits>& g, std::vector<char>& marked, const CanEnter& can_enter)
 {
-  const std::size_t nx = g.dims[0], ny = g.dims[1], nz = g.dims[2], plane = nx * ny;
-  auto open = [&](std::size_t w) { return !marked[w] && can_enter(w); };
-  std::vector<std::size_t> stack;
-  for(std::size_t k = 0; k < nz; ++k)
-    for(std::size_t j = 0; j < ny; ++j)
-    {
-      const std::size_t row = k * plane + j * nx;
-      for(std::size_t i = 0; i < nx; ++i)
-      {
-        const std::size_t v = row + i;
-        if(open(v) && ((i > 0 && marked[v - 1]) || (i + 1 < nx && marked[v + 1]) ||
-                       (j > 0 && marked[v - nx]) || (j + 1 < ny && marked[v + nx]) ||
-                       (k > 0 && marked[v - plane]) || (k + 1 < nz && marked[v + plane])))
-          stack.push_back(v);
-      }
-    }
-  while(!stack.empty())
+  const std::size_t nx = g.dims[0], rows = std::size_t(g.dims[1]) * g.dims[2];
+  struct Run
   {
-    const std::size_t v = stack.back();
-    stack.pop_back();
-    if(marked[v])
-      continue; // in a run filled since it was pushed
-    const std::size_t row = v - v % nx, j = (v / nx) % ny, k = v / plane;
-    std::size_t first = v, last = v;
-    while(first > row && open(first - 1))
-      --first;
-    while(last + 1 < row + nx && open(last + 1))
-      ++last;
-    std::fill(marked.begin() + first, marked.begin() + last + 1, char(1));
-    const bool has_row[4] = {j > 0, j + 1 < ny, k > 0, k + 1 < nz};
-    const std::size_t to_row[4] = {row - nx, row + nx, row - plane, row + plane};
-    for(int r = 0; r < 4; ++r)
+    std::size_t first, last; // linear indices, inclusive
+    std::size_t parent;      // union-find
+    bool marked;
+  };
+  std::vector<Run> runs;
+  std::vector<std::size_t> row_start(rows + 1); // runs of row r: [row_start[r], row_start[r + 1])
+  for(std::size_t r = 0; r < rows; ++r)
+  {
+    row_start[r] = runs.size();
+    const std::size_t base = r * nx;
+    for(std::size_t i = 0; i < nx;)
     {
-      if(!has_row[r])
-        continue;
-      bool in_run = false;
-      for(std::size_t w = to_row[r] + (first - row); w <= to_row[r] + (last - row); ++w)
+      if(!marked[base + i] && !can_enter(base + i))
       {
-        const bool o = open(w);
-        if(o && !in_run)
-          stack.push_back(w);
-        in_run = o;
+        ++i;
+        continue;
       }
+      Run run{base + i, base + i, runs.size(), false};
+      for(; i < nx && (marked[base + i] || can_enter(base + i)); ++i)
+      {
+        run.last = base + i;
+        run.marked = run.marked || marked[base + i];
+      }
+      runs.push_back(run);
     }
   }
+  row_start[rows] = runs.size();
+  auto root = [&](std::size_t a) {
+    while(runs[a].parent != a)
+      a = runs[a].parent = runs[runs[a].parent].parent;
+    return a;
+  };
+  auto join_rows = [&](std::size_t r, std::size_t s) { // rows r and s = r - 1 (along y) or r - ny (along z)
+    std::size_t a = row_start[r], b = row_start[s];
+    const std::size_t shift = (r - s) * nx;
+    while(a < row_start[r + 1] && b < row_start[s + 1])
+    {
+      const std::size_t a_first = runs[a].first - shift, a_last = runs[a].last - shift;
+      if(runs[b].last < a_first)
+        ++b;
+      else if(a_last < runs[b].first)
+        ++a;
+      else
+      {
+        const std::size_t x = root(a), y = root(b);
+        if(x != y)
+        {
+          runs[(std::max)(x, y)].parent = (std::min)(x, y);
+          runs[(std::min)(x, y)].marked = runs[x].marked || runs[y].marked;
+        }
+        if(runs[a].last - shift < runs[b].last)
+          ++a;
+        else
+          ++b;
+      }
+    }
+  };
+  const std::size_t ny = g.dims[1];
+  for(std::size_t r = 0; r < rows; ++r)
+  {
+    if(r % ny != 0)
+      join_rows(r, r - 1);
+    if(r >= ny)
+      join_rows(r, r - ny);
+  }
+  for(std::size_t a = 0; a < runs.size(); ++a)
+    if(runs[root(a)].marked)
+      std::fill(marked.begin() + runs[a].first, marked.begin() + runs[a].last + 1, char(1));
 }
 
 // Centres that a ball of radius sqrt(r2) reaches by rolling in from the exterior without
