@@ -54,7 +54,7 @@ public:
     std::vector<std::pair<double, std::size_t>> nearest;
     std::vector<Eigen::Vector3d> q;
     Eigen::MatrixXd a;
-    Eigen::VectorXd z;
+    Eigen::VectorXd z, c, r; // c: the coefficients, r: the residuals
     Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr;
   };
 
@@ -97,9 +97,15 @@ public:
     for(const Eigen::Vector3d& p : q)
       centre += p;
     centre /= m;
+    // entry by entry: the outer products of Eigen went through the stack (a tenth of a fit)
     Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
     for(const Eigen::Vector3d& p : q)
-      covariance += (p - centre) * (p - centre).transpose();
+    {
+      const Eigen::Vector3d d = p - centre;
+      for(int r = 0; r < 3; ++r)
+        for(int s = 0; s < 3; ++s)
+          covariance(r, s) += d[r] * d[s];
+    }
     const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(covariance);
     if(!(eigen.eigenvalues()[1] > 0))
       return result; // collinear neighbours: no surface to fit
@@ -111,13 +117,21 @@ public:
     for(int j = 0; j < m; ++j)
     {
       const Eigen::Vector3d l = frame.transpose() * (q[j] - centre);
-      a.row(j) << l[1] * l[1], l[1] * l[2], l[2] * l[2], l[1], l[2], 1;
+      a(j, 0) = l[1] * l[1];
+      a(j, 1) = l[1] * l[2];
+      a(j, 2) = l[2] * l[2];
+      a(j, 3) = l[1];
+      a(j, 4) = l[2];
+      a(j, 5) = 1;
       z[j] = l[0];
     }
-    const Eigen::VectorXd c = w.qr.compute(a).solve(z);
+    Eigen::VectorXd& c = w.c;
+    c = w.qr.compute(a).solve(z);
     if(!c.allFinite())
       return result;
-    result.residual = std::sqrt((a * c - z).squaredNorm() / m);
+    w.r.noalias() = a * c;
+    w.r -= z;
+    result.residual = std::sqrt(w.r.squaredNorm() / m);
     const Eigen::Vector3d l = frame.transpose() * (self - centre);
     const double on_quadric = c[0] * l[1] * l[1] + c[1] * l[1] * l[2] + c[2] * l[2] * l[2] + c[3] * l[1] + c[4] * l[2] + c[5];
     result.projection = self + (on_quadric - l[0]) * frame.col(0);
