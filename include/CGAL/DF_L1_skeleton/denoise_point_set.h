@@ -58,32 +58,36 @@ public:
     Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr;
   };
 
-  // Calls f(q, fit of point(q)) for q = 0, ..., n - 1, in blocks of 64 that share a
-  // workspace (in parallel with Parallel_tag).
+  // Calls f(q, fit to the k nearest neighbours of point(q)) for q = 0, ..., n - 1, in
+  // blocks of 64 that share a workspace (in parallel with Parallel_tag).
   template <class ConcurrencyTag, class Point, class F>
-  void for_each_fit(std::size_t n, const Point& point, const F& f) const
+  void for_each_fit(std::size_t n, unsigned int k, const Point& point, const F& f) const
   {
     const std::size_t block = 64;
     for_each_index<ConcurrencyTag>((n + block - 1) / block, [&](std::size_t b) {
       Workspace w;
       for(std::size_t q = b * block; q < (std::min)(n, (b + 1) * block); ++q)
-        f(q, fit(point(q), w));
+        f(q, fit(point(q), k, w));
     }, 1);
   }
 
-  Local_quadric_fitter(const std::vector<Point_3>& points, unsigned int k)
-    : xyz_(to_xyz(points, CGAL::Identity_property_map<Point_3>())), k_(k), grid_(xyz_, 0)
+  // The number of neighbours is given to each fit, so that the noise estimate and the
+  // smoothing share the grid (building it took 6 ms of sequential work on 35,000 points).
+  explicit Local_quadric_fitter(const std::vector<Point_3>& points)
+    : xyz_(to_xyz(points, CGAL::Identity_property_map<Point_3>())), grid_(xyz_, 0)
   {
   }
+
+  std::size_t size() const { return xyz_.size(); }
 
   // The points in an order that keeps consecutive fits' searches in the same cells.
   const std::vector<std::size_t>& spatial_order() const { return grid_.indices_by_cell(); }
 
-  Fit fit(std::size_t i, Workspace& w) const
+  Fit fit(std::size_t i, unsigned int k, Workspace& w) const
   {
     Fit result;
     std::vector<std::pair<double, std::size_t>>& nearest = w.nearest; // the point itself first
-    grid_.k_nearest(xyz_[i], k_, [](std::size_t) { return true; }, nearest);
+    grid_.k_nearest(xyz_[i], k, [](std::size_t) { return true; }, nearest);
     std::vector<Eigen::Vector3d>& q = w.q;
     q.clear();
     for(const auto& neighbour : nearest)
@@ -143,7 +147,6 @@ public:
 
 private:
   std::vector<std::array<double, 3>> xyz_;
-  unsigned int k_;
   Uniform_grid grid_; // cells for k-nearest searches
 };
 
@@ -155,6 +158,47 @@ std::vector<typename boost::property_traits<PointMap>::value_type> copy_points(c
   for(const auto& value : points)
     xyz.push_back(get(point_map, value));
   return xyz;
+}
+
+// The noise estimate of estimate_surface_noise(), from a fitter of the points.
+template <class ConcurrencyTag, class Traits>
+double surface_noise(const Local_quadric_fitter<Traits>& fitter)
+{
+  const unsigned int k = 16;
+  const std::size_t size = fitter.size();
+  if(size < k)
+    return 0;
+  const std::size_t n = (std::min)(size, std::size_t(2000));
+  std::vector<double> residual(n, -1);
+  fitter.template for_each_fit<ConcurrencyTag>(n, k, [&](std::size_t s) { return s * size / n; },
+                                                [&](std::size_t s, const auto& fit) {
+                                                  if(fit.valid)
+                                                    residual[s] = fit.residual;
+                                                });
+  residual.erase(std::remove(residual.begin(), residual.end(), -1.0), residual.end());
+  if(residual.empty())
+    return 0;
+  std::nth_element(residual.begin(), residual.begin() + residual.size() / 2, residual.end());
+  return residual[residual.size() / 2];
+}
+
+// The points smoothed as denoise_point_set() does, from a fitter of these points.
+template <class ConcurrencyTag, class Traits>
+std::vector<typename Traits::Point_3> smoothed_points(const Local_quadric_fitter<Traits>& fitter,
+                                                      const std::vector<typename Traits::Point_3>& points,
+                                                      unsigned int k)
+{
+  typedef typename Traits::Point_3 Point_3;
+  std::vector<Point_3> smoothed = points;
+  if(points.size() < 10)
+    return smoothed;
+  const std::vector<std::size_t>& order = fitter.spatial_order();
+  fitter.template for_each_fit<ConcurrencyTag>(points.size(), k, [&](std::size_t q) { return order[q]; },
+                                                [&](std::size_t q, const auto& fit) {
+                                                  if(fit.valid)
+                                                    smoothed[order[q]] = Point_3(fit.projection[0], fit.projection[1], fit.projection[2]);
+                                                });
+  return smoothed;
 }
 
 } // namespace internal
@@ -183,24 +227,9 @@ double estimate_surface_noise(const PointRange& points, const NamedParameters& n
   typedef Point_set_processing_3_np_helper<const PointRange, NamedParameters> NP_helper;
   typedef typename NP_helper::Geom_traits Traits;
   const auto point_map = NP_helper::get_const_point_map(points, np);
-  const unsigned int k = 16;
   internal::checked_bbox(points, point_map, "noise estimate");
   const auto xyz = internal::copy_points(points, point_map);
-  if(xyz.size() < k)
-    return 0;
-  const internal::Local_quadric_fitter<Traits> fitter(xyz, k);
-  const std::size_t n = (std::min)(xyz.size(), std::size_t(2000));
-  std::vector<double> residual(n, -1);
-  fitter.template for_each_fit<ConcurrencyTag>(n, [&](std::size_t s) { return s * xyz.size() / n; },
-                                                [&](std::size_t s, const auto& fit) {
-                                                  if(fit.valid)
-                                                    residual[s] = fit.residual;
-                                                });
-  residual.erase(std::remove(residual.begin(), residual.end(), -1.0), residual.end());
-  if(residual.empty())
-    return 0;
-  std::nth_element(residual.begin(), residual.begin() + residual.size() / 2, residual.end());
-  return residual[residual.size() / 2];
+  return internal::surface_noise<ConcurrencyTag>(internal::Local_quadric_fitter<Traits>(xyz));
 }
 
 /// \ingroup PkgDFL1SkeletonRef
@@ -234,17 +263,9 @@ denoise_point_set(const PointRange& points, const NamedParameters& np = paramete
   const unsigned int k = internal::denoising_neighbors(np, "denoising");
   internal::checked_bbox(points, point_map, "denoising");
   const std::vector<Point_3> xyz = internal::copy_points(points, point_map);
-  std::vector<Point_3> smoothed = xyz;
   if(xyz.size() < 10)
-    return smoothed;
-  const internal::Local_quadric_fitter<Traits> fitter(xyz, k);
-  const std::vector<std::size_t>& order = fitter.spatial_order();
-  fitter.template for_each_fit<ConcurrencyTag>(xyz.size(), [&](std::size_t q) { return order[q]; },
-                                                [&](std::size_t q, const auto& fit) {
-                                                  if(fit.valid)
-                                                    smoothed[order[q]] = Point_3(fit.projection[0], fit.projection[1], fit.projection[2]);
-                                                });
-  return smoothed;
+    return xyz;
+  return internal::smoothed_points<ConcurrencyTag>(internal::Local_quadric_fitter<Traits>(xyz), xyz, k);
 }
 
 } // namespace DF_L1

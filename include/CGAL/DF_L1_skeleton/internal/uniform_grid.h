@@ -122,9 +122,11 @@ public:
   void k_nearest(const std::array<double, 3>& q, std::size_t k, const Keep& keep,
                  std::vector<std::pair<double, std::size_t>>& nearest) const
   {
-    nearest.clear();
     if(k == 0)
+    {
+      nearest.clear();
       return;
+    }
     std::array<double, 3> t; // q in cell units
     std::array<int, 3> c;    // the cell of q
     for(int a = 0; a < 3; ++a)
@@ -141,7 +143,7 @@ public:
     };
     // nearest[0, found): the points found so far, sorted; kth: the squared distance of the
     // k-th one, infinite until k are found (no point or cell farther can be among the k).
-    nearest.resize((std::min)(k, sorted_.size())); // no more can be found
+    nearest.resize((std::min)(k, sorted_.size())); // no more can be found; no-op when reused
     std::size_t found = 0;
     double kth = std::numeric_limits<double>::infinity();
     const auto visit = [&](int i, int j, int l) {
