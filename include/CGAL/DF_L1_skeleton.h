@@ -162,14 +162,16 @@ public:
     for(std::size_t i = 0; i < points_.size(); ++i)
       if(!sparse_outliers_[i])
         kept_points_.push_back(points_[i]);
-    surface_noise_ = DF_L1::estimate_surface_noise<ConcurrencyTag>(kept_points_);
+    // one fitter, and so one grid, for the noise estimate and the smoothing (the points
+    // were checked by flag_outliers())
+    const DF_L1::internal::Local_quadric_fitter<Traits> fitter(kept_points_);
+    surface_noise_ = DF_L1::internal::surface_noise<ConcurrencyTag>(fitter);
     const double finest_voxel = DF_L1::internal::longest_side(
       CGAL::bbox_3(points_.begin(), points_.end())) / voxel_resolution_;
     denoised_ = denoising_ == DF_L1::Denoising::ALWAYS ||
                 (denoising_ == DF_L1::Denoising::AUTOMATIC && surface_noise_ > 0.2 * finest_voxel);
     if(denoised_)
-      kept_points_ = DF_L1::denoise_point_set<ConcurrencyTag>(
-        kept_points_, parameters::denoising_neighbors(int(denoising_neighbors_)));
+      kept_points_ = DF_L1::internal::smoothed_points<ConcurrencyTag>(fitter, kept_points_, denoising_neighbors_);
     denoise_checked_ = true;
   }
 

@@ -54,36 +54,40 @@ public:
     std::vector<std::pair<double, std::size_t>> nearest;
     std::vector<Eigen::Vector3d> q;
     Eigen::MatrixXd a;
-    Eigen::VectorXd z;
+    Eigen::VectorXd z, c, r; // c: the coefficients, r: the residuals
     Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr;
   };
 
-  // Calls f(q, fit of point(q)) for q = 0, ..., n - 1, in blocks of 64 that share a
-  // workspace (in parallel with Parallel_tag).
+  // Calls f(q, fit to the k nearest neighbours of point(q)) for q = 0, ..., n - 1, in
+  // blocks of 64 that share a workspace (in parallel with Parallel_tag).
   template <class ConcurrencyTag, class Point, class F>
-  void for_each_fit(std::size_t n, const Point& point, const F& f) const
+  void for_each_fit(std::size_t n, unsigned int k, const Point& point, const F& f) const
   {
     const std::size_t block = 64;
     for_each_index<ConcurrencyTag>((n + block - 1) / block, [&](std::size_t b) {
       Workspace w;
       for(std::size_t q = b * block; q < (std::min)(n, (b + 1) * block); ++q)
-        f(q, fit(point(q), w));
+        f(q, fit(point(q), k, w));
     }, 1);
   }
 
-  Local_quadric_fitter(const std::vector<Point_3>& points, unsigned int k)
-    : xyz_(to_xyz(points, CGAL::Identity_property_map<Point_3>())), k_(k), grid_(xyz_, 0)
+  // The number of neighbours is given to each fit, so that the noise estimate and the
+  // smoothing share the grid (building it took 6 ms of sequential work on 35,000 points).
+  explicit Local_quadric_fitter(const std::vector<Point_3>& points)
+    : xyz_(to_xyz(points, CGAL::Identity_property_map<Point_3>())), grid_(xyz_, 0)
   {
   }
+
+  std::size_t size() const { return xyz_.size(); }
 
   // The points in an order that keeps consecutive fits' searches in the same cells.
   const std::vector<std::size_t>& spatial_order() const { return grid_.indices_by_cell(); }
 
-  Fit fit(std::size_t i, Workspace& w) const
+  Fit fit(std::size_t i, unsigned int k, Workspace& w) const
   {
     Fit result;
     std::vector<std::pair<double, std::size_t>>& nearest = w.nearest; // the point itself first
-    grid_.k_nearest(xyz_[i], k_, [](std::size_t) { return true; }, nearest);
+    grid_.k_nearest(xyz_[i], k, [](std::size_t) { return true; }, nearest);
     std::vector<Eigen::Vector3d>& q = w.q;
     q.clear();
     for(const auto& neighbour : nearest)
@@ -97,9 +101,15 @@ public:
     for(const Eigen::Vector3d& p : q)
       centre += p;
     centre /= m;
+    // entry by entry: the outer products of Eigen went through the stack (a tenth of a fit)
     Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
     for(const Eigen::Vector3d& p : q)
-      covariance += (p - centre) * (p - centre).transpose();
+    {
+      const Eigen::Vector3d d = p - centre;
+      for(int r = 0; r < 3; ++r)
+        for(int s = 0; s < 3; ++s)
+          covariance(r, s) += d[r] * d[s];
+    }
     const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(covariance);
     if(!(eigen.eigenvalues()[1] > 0))
       return result; // collinear neighbours: no surface to fit
@@ -111,13 +121,21 @@ public:
     for(int j = 0; j < m; ++j)
     {
       const Eigen::Vector3d l = frame.transpose() * (q[j] - centre);
-      a.row(j) << l[1] * l[1], l[1] * l[2], l[2] * l[2], l[1], l[2], 1;
+      a(j, 0) = l[1] * l[1];
+      a(j, 1) = l[1] * l[2];
+      a(j, 2) = l[2] * l[2];
+      a(j, 3) = l[1];
+      a(j, 4) = l[2];
+      a(j, 5) = 1;
       z[j] = l[0];
     }
-    const Eigen::VectorXd c = w.qr.compute(a).solve(z);
+    Eigen::VectorXd& c = w.c;
+    c = w.qr.compute(a).solve(z);
     if(!c.allFinite())
       return result;
-    result.residual = std::sqrt((a * c - z).squaredNorm() / m);
+    w.r.noalias() = a * c;
+    w.r -= z;
+    result.residual = std::sqrt(w.r.squaredNorm() / m);
     const Eigen::Vector3d l = frame.transpose() * (self - centre);
     const double on_quadric = c[0] * l[1] * l[1] + c[1] * l[1] * l[2] + c[2] * l[2] * l[2] + c[3] * l[1] + c[4] * l[2] + c[5];
     result.projection = self + (on_quadric - l[0]) * frame.col(0);
@@ -129,7 +147,6 @@ public:
 
 private:
   std::vector<std::array<double, 3>> xyz_;
-  unsigned int k_;
   Uniform_grid grid_; // cells for k-nearest searches
 };
 
@@ -141,6 +158,47 @@ std::vector<typename boost::property_traits<PointMap>::value_type> copy_points(c
   for(const auto& value : points)
     xyz.push_back(get(point_map, value));
   return xyz;
+}
+
+// The noise estimate of estimate_surface_noise(), from a fitter of the points.
+template <class ConcurrencyTag, class Traits>
+double surface_noise(const Local_quadric_fitter<Traits>& fitter)
+{
+  const unsigned int k = 16;
+  const std::size_t size = fitter.size();
+  if(size < k)
+    return 0;
+  const std::size_t n = (std::min)(size, std::size_t(2000));
+  std::vector<double> residual(n, -1);
+  fitter.template for_each_fit<ConcurrencyTag>(n, k, [&](std::size_t s) { return s * size / n; },
+                                                [&](std::size_t s, const auto& fit) {
+                                                  if(fit.valid)
+                                                    residual[s] = fit.residual;
+                                                });
+  residual.erase(std::remove(residual.begin(), residual.end(), -1.0), residual.end());
+  if(residual.empty())
+    return 0;
+  std::nth_element(residual.begin(), residual.begin() + residual.size() / 2, residual.end());
+  return residual[residual.size() / 2];
+}
+
+// The points smoothed as denoise_point_set() does, from a fitter of these points.
+template <class ConcurrencyTag, class Traits>
+std::vector<typename Traits::Point_3> smoothed_points(const Local_quadric_fitter<Traits>& fitter,
+                                                      const std::vector<typename Traits::Point_3>& points,
+                                                      unsigned int k)
+{
+  typedef typename Traits::Point_3 Point_3;
+  std::vector<Point_3> smoothed = points;
+  if(points.size() < 10)
+    return smoothed;
+  const std::vector<std::size_t>& order = fitter.spatial_order();
+  fitter.template for_each_fit<ConcurrencyTag>(points.size(), k, [&](std::size_t q) { return order[q]; },
+                                                [&](std::size_t q, const auto& fit) {
+                                                  if(fit.valid)
+                                                    smoothed[order[q]] = Point_3(fit.projection[0], fit.projection[1], fit.projection[2]);
+                                                });
+  return smoothed;
 }
 
 } // namespace internal
@@ -169,24 +227,9 @@ double estimate_surface_noise(const PointRange& points, const NamedParameters& n
   typedef Point_set_processing_3_np_helper<const PointRange, NamedParameters> NP_helper;
   typedef typename NP_helper::Geom_traits Traits;
   const auto point_map = NP_helper::get_const_point_map(points, np);
-  const unsigned int k = 16;
   internal::checked_bbox(points, point_map, "noise estimate");
   const auto xyz = internal::copy_points(points, point_map);
-  if(xyz.size() < k)
-    return 0;
-  const internal::Local_quadric_fitter<Traits> fitter(xyz, k);
-  const std::size_t n = (std::min)(xyz.size(), std::size_t(2000));
-  std::vector<double> residual(n, -1);
-  fitter.template for_each_fit<ConcurrencyTag>(n, [&](std::size_t s) { return s * xyz.size() / n; },
-                                                [&](std::size_t s, const auto& fit) {
-                                                  if(fit.valid)
-                                                    residual[s] = fit.residual;
-                                                });
-  residual.erase(std::remove(residual.begin(), residual.end(), -1.0), residual.end());
-  if(residual.empty())
-    return 0;
-  std::nth_element(residual.begin(), residual.begin() + residual.size() / 2, residual.end());
-  return residual[residual.size() / 2];
+  return internal::surface_noise<ConcurrencyTag>(internal::Local_quadric_fitter<Traits>(xyz));
 }
 
 /// \ingroup PkgDFL1SkeletonRef
@@ -220,17 +263,9 @@ denoise_point_set(const PointRange& points, const NamedParameters& np = paramete
   const unsigned int k = internal::denoising_neighbors(np, "denoising");
   internal::checked_bbox(points, point_map, "denoising");
   const std::vector<Point_3> xyz = internal::copy_points(points, point_map);
-  std::vector<Point_3> smoothed = xyz;
   if(xyz.size() < 10)
-    return smoothed;
-  const internal::Local_quadric_fitter<Traits> fitter(xyz, k);
-  const std::vector<std::size_t>& order = fitter.spatial_order();
-  fitter.template for_each_fit<ConcurrencyTag>(xyz.size(), [&](std::size_t q) { return order[q]; },
-                                                [&](std::size_t q, const auto& fit) {
-                                                  if(fit.valid)
-                                                    smoothed[order[q]] = Point_3(fit.projection[0], fit.projection[1], fit.projection[2]);
-                                                });
-  return smoothed;
+    return xyz;
+  return internal::smoothed_points<ConcurrencyTag>(internal::Local_quadric_fitter<Traits>(xyz), xyz, k);
 }
 
 } // namespace DF_L1

@@ -99,8 +99,9 @@ std::vector<bool> flag_sparse_outliers(const PointRange& points, unsigned int k 
   std::vector<double> kth(n);
   std::vector<std::size_t> neighbours(n * k);
   std::vector<char> flagged(n, 0); // a copy of flags that threads may read
-  const auto measure = [&](std::size_t i, bool none_flagged) {
-    std::vector<std::pair<double, std::size_t>> nearest;
+  // `nearest` is scratch memory shared by the searches of a range (an allocation per
+  // search cost a tenth of the stage)
+  const auto measure = [&](std::size_t i, bool none_flagged, std::vector<std::pair<double, std::size_t>>& nearest) {
     if(none_flagged) // the first pass: flagged is not read (at random places, on a large cloud)
       grid.k_nearest(xyz[i], k, [&](std::size_t j) { return j != i; }, nearest);
     else
@@ -111,15 +112,19 @@ std::vector<bool> flag_sparse_outliers(const PointRange& points, unsigned int k 
   };
   // in cell order: consecutive searches read the same cells
   const std::vector<std::size_t>& query_order = grid.indices_by_cell();
-  internal::for_each_index<ConcurrencyTag>(n, [&](std::size_t q) { measure(query_order[q], true); });
+  internal::for_each_range<ConcurrencyTag>(n, [&](std::size_t begin, std::size_t end) {
+    std::vector<std::pair<double, std::size_t>> nearest;
+    for(std::size_t q = begin; q < end; ++q)
+      measure(query_order[q], true, nearest);
+  });
   std::vector<double> sorted = kth;
   std::nth_element(sorted.begin(), sorted.begin() + n / 2, sorted.end());
   const double threshold = ratio * sorted[n / 2];
 
-  const auto is_outlier = [&](std::size_t i) {
+  const auto is_outlier = [&](std::size_t i, std::vector<double>& around) {
     if(kth[i] > threshold)
       return true;
-    std::vector<double> around(k);
+    around.resize(k);
     for(std::size_t m = 0; m < k; ++m)
       around[m] = kth[neighbours[i * k + m]];
     std::nth_element(around.begin(), around.begin() + k / 2, around.end());
@@ -134,8 +139,10 @@ std::vector<bool> flag_sparse_outliers(const PointRange& points, unsigned int k 
   std::size_t remaining = n;
   while(!candidates.empty())
   {
-    internal::for_each_index<ConcurrencyTag>(candidates.size(), [&](std::size_t c) {
-      verdict[candidates[c]] = is_outlier(candidates[c]);
+    internal::for_each_range<ConcurrencyTag>(candidates.size(), [&](std::size_t begin, std::size_t end) {
+      std::vector<double> around;
+      for(std::size_t c = begin; c < end; ++c)
+        verdict[candidates[c]] = is_outlier(candidates[c], around);
     });
     std::size_t added = 0;
     for(std::size_t i : candidates)
@@ -149,7 +156,11 @@ std::vector<bool> flag_sparse_outliers(const PointRange& points, unsigned int k 
       if(!flagged[i] && std::any_of(neighbours.begin() + i * k, neighbours.begin() + (i + 1) * k,
                                     [&](std::size_t j) { return flagged[j] != 0; }))
         candidates.push_back(i);
-    internal::for_each_index<ConcurrencyTag>(candidates.size(), [&](std::size_t c) { measure(candidates[c], false); });
+    internal::for_each_range<ConcurrencyTag>(candidates.size(), [&](std::size_t begin, std::size_t end) {
+      std::vector<std::pair<double, std::size_t>> nearest;
+      for(std::size_t c = begin; c < end; ++c)
+        measure(candidates[c], false, nearest);
+    });
   }
   return flags;
 }

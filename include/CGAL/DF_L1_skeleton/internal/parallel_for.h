@@ -37,6 +37,22 @@ void for_each_index(std::size_t n, const Function& f, std::size_t grain = 512)
     f(i);
 }
 
+// f(begin, end) over consecutive ranges that cover [0, n), of about `grain` indices each
+// with TBB: for loops whose iterations can share scratch memory along a range.
+template <class ConcurrencyTag, class Function>
+void for_each_range(std::size_t n, const Function& f, std::size_t grain = 512)
+{
+#ifdef CGAL_LINKED_WITH_TBB
+  if(std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value)
+  {
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, grain),
+                      [&](const tbb::blocked_range<std::size_t>& r) { f(r.begin(), r.end()); });
+    return;
+  }
+#endif
+  f(std::size_t(0), n);
+}
+
 // f() and g(), at the same time with TBB when ConcurrencyTag is Parallel_tag; they must
 // not write what the other reads.
 template <class ConcurrencyTag, class F, class G>

@@ -52,9 +52,13 @@ Directionality compute_directionality(const std::vector<Vec3>& samples, const st
         return true;
       const double w = std::exp(-d2 * inv);
       const Eigen::Vector3d p(samples[j][0] - samples[i][0], samples[j][1] - samples[i][1], samples[j][2] - samples[i][2]);
+      const Eigen::Vector3d wp = w * p;
       total += w;
-      mean += w * p;
-      second += w * p * p.transpose();
+      mean += wp;
+      // entry by entry: Eigen's 3x3 outer product went through the stack at each sample
+      for(int r = 0; r < 3; ++r)
+        for(int c = 0; c < 3; ++c)
+          second(r, c) += wp[r] * p[c];
       ++count;
       return true;
     });
@@ -73,20 +77,23 @@ Directionality compute_directionality(const std::vector<Vec3>& samples, const st
     const Eigen::Vector3d e = solver.eigenvectors().col(2);
     d.direction[i] = normalized(Vec3{{e(0), e(1), e(2)}});
   });
-  for_each_index<ConcurrencyTag>(m, [&](std::size_t i) {
-    if(!active[i])
-      return;
-    // the 6 nearest within the support radius (a k-nearest search: once the radii have
-    // grown, the ball holds most of the samples)
-    std::vector<std::pair<double, std::size_t>> near;
-    grid.k_nearest(samples[i], 6, [&](std::size_t j) { return active[j] && j != i; }, near);
-    const double r2 = radius[i] * radius[i];
-    while(!near.empty() && near.back().first > r2)
-      near.pop_back();
-    double s = raw[i];
-    for(const auto& neighbour : near)
-      s += raw[neighbour.second];
-    d.sigma[i] = s / double(near.size() + 1);
+  for_each_range<ConcurrencyTag>(m, [&](std::size_t begin, std::size_t end) {
+    std::vector<std::pair<double, std::size_t>> near; // shared by the searches of the range
+    for(std::size_t i = begin; i < end; ++i)
+    {
+      if(!active[i])
+        continue;
+      // the 6 nearest within the support radius (a k-nearest search: once the radii have
+      // grown, the ball holds most of the samples)
+      grid.k_nearest(samples[i], 6, [&](std::size_t j) { return active[j] && j != i; }, near);
+      const double r2 = radius[i] * radius[i];
+      while(!near.empty() && near.back().first > r2)
+        near.pop_back();
+      double s = raw[i];
+      for(const auto& neighbour : near)
+        s += raw[neighbour.second];
+      d.sigma[i] = s / double(near.size() + 1);
+    }
   });
   return d;
 }

@@ -122,9 +122,11 @@ public:
   void k_nearest(const std::array<double, 3>& q, std::size_t k, const Keep& keep,
                  std::vector<std::pair<double, std::size_t>>& nearest) const
   {
-    nearest.clear();
     if(k == 0)
+    {
+      nearest.clear();
       return;
+    }
     std::array<double, 3> t; // q in cell units
     std::array<int, 3> c;    // the cell of q
     for(int a = 0; a < 3; ++a)
@@ -132,15 +134,18 @@ public:
       t[a] = (q[a] - lo_[a]) / cell_;
       c[a] = std::clamp(int(std::floor(t[a])), 0, dims_[a] - 1);
     }
-    // The distance from q to the cells of coordinate i along axis a, in cell units; a
-    // millionth of a cell is taken off for the rounding of t.
-    const auto gap = [&](int a, int i) {
-      const double g = i > c[a] ? i - t[a] : i < c[a] ? t[a] - (i + 1) : 0;
-      return (std::max)(g - 1e-6, 0.0);
-    };
     const double cell2 = cell_ * cell_;
-    // Whether a point at squared distance d2 (cell units) may be among the k nearest.
-    const auto may_hold = [&](double d2) { return nearest.size() < k || d2 * cell2 <= nearest.back().first; };
+    // The squared distance from q to the cells of coordinate i along axis a; a millionth
+    // of a cell is taken off for the rounding of t.
+    const auto gap2 = [&](int a, int i) {
+      const double g = (std::max)((i > c[a] ? i - t[a] : i < c[a] ? t[a] - (i + 1) : 0) - 1e-6, 0.0);
+      return g * g * cell2;
+    };
+    // nearest[0, found): the points found so far, sorted; kth: the squared distance of the
+    // k-th one, infinite until k are found (no point or cell farther can be among the k).
+    nearest.resize((std::min)(k, sorted_.size())); // no more can be found; no-op when reused
+    std::size_t found = 0;
+    double kth = std::numeric_limits<double>::infinity();
     const auto visit = [&](int i, int j, int l) {
       const std::size_t cell = cell_index({{i, j, l}});
       for(std::size_t s = start_[cell]; s < start_[cell + 1]; ++s)
@@ -149,15 +154,17 @@ public:
         double d2 = (q[0] - p[0]) * (q[0] - p[0]);
         d2 += (q[1] - p[1]) * (q[1] - p[1]);
         d2 += (q[2] - p[2]) * (q[2] - p[2]);
-        const std::pair<double, std::size_t> found(d2, order_[s]);
-        if((nearest.size() == k && !(found < nearest.back())) || !keep(found.second))
+        if(d2 > kth)
           continue;
-        if(nearest.size() < k)
-          nearest.push_back(found);
-        std::size_t m = nearest.size() - 1; // sorted into place from the back
-        for(; m > 0 && found < nearest[m - 1]; --m)
+        const std::pair<double, std::size_t> point(d2, order_[s]);
+        if((found == k && !(point < nearest[k - 1])) || !keep(point.second))
+          continue;
+        std::size_t m = found < k ? found++ : k - 1; // sorted into place from the back
+        for(; m > 0 && point < nearest[m - 1]; --m)
           nearest[m] = nearest[m - 1];
-        nearest[m] = found;
+        nearest[m] = point;
+        if(found == k)
+          kth = nearest[k - 1].first;
       }
     };
     for(int r = 0;; ++r)
@@ -169,31 +176,47 @@ public:
         hi[a] = (std::min)(c[a] + r, dims_[a] - 1);
       }
       for(int l = lo[2]; l <= hi[2]; ++l)
+      {
+        const double z2 = gap2(2, l);
+        if(z2 > kth)
+          continue;
         for(int j = lo[1]; j <= hi[1]; ++j)
         {
-          const double gz = gap(2, l), gy = gap(1, j), row = gz * gz + gy * gy;
-          if(!may_hold(row))
+          const double yz2 = z2 + gap2(1, j);
+          if(yz2 > kth)
             continue;
-          const bool face = std::abs(l - c[2]) == r || std::abs(j - c[1]) == r; // the whole row is in the ring
-          for(int i = face ? lo[0] : c[0] - r; i <= hi[0]; i += face ? 1 : 2 * r)
+          if(std::abs(l - c[2]) == r || std::abs(j - c[1]) == r) // the whole row is in the ring
           {
-            const double gx = gap(0, i);
-            if(i >= 0 && may_hold(row + gx * gx))
+            // from the cell nearest to q outwards, while the cells may hold a point
+            for(int i = c[0]; i <= hi[0] && yz2 + gap2(0, i) <= kth; ++i)
+              visit(i, j, l);
+            for(int i = c[0] - 1; i >= lo[0] && yz2 + gap2(0, i) <= kth; --i)
               visit(i, j, l);
           }
+          else
+          {
+            if(c[0] - r >= 0 && yz2 + gap2(0, c[0] - r) <= kth)
+              visit(c[0] - r, j, l);
+            if(c[0] + r < dims_[0] && yz2 + gap2(0, c[0] + r) <= kth)
+              visit(c[0] + r, j, l);
+          }
         }
+      }
       // The cells not searched yet lie beyond the faces of the searched box that are
       // inside the grid.
       double beyond = std::numeric_limits<double>::infinity();
       for(int a = 0; a < 3; ++a)
       {
         if(c[a] - r > 0)
-          beyond = (std::min)(beyond, gap(a, c[a] - r - 1));
+          beyond = (std::min)(beyond, gap2(a, c[a] - r - 1));
         if(c[a] + r < dims_[a] - 1)
-          beyond = (std::min)(beyond, gap(a, c[a] + r + 1));
+          beyond = (std::min)(beyond, gap2(a, c[a] + r + 1));
       }
-      if(beyond == std::numeric_limits<double>::infinity() || !may_hold(beyond * beyond))
+      if(beyond == std::numeric_limits<double>::infinity() || beyond > kth)
+      {
+        nearest.resize(found);
         return;
+      }
     }
   }
 
