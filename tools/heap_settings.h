@@ -4,6 +4,8 @@
 #ifndef DF_L1_TOOLS_HEAP_SETTINGS_H
 #define DF_L1_TOOLS_HEAP_SETTINGS_H
 
+#include <cstdlib> // defines __GLIBC__ with glibc: tested below, before any other header may have
+
 #ifdef __GLIBC__
 #include <malloc.h>
 #endif
