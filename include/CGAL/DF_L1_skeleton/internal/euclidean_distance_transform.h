@@ -3,19 +3,14 @@
 #ifndef CGAL_DF_L1_SKELETON_INTERNAL_EUCLIDEAN_DISTANCE_TRANSFORM_H
 #define CGAL_DF_L1_SKELETON_INTERNAL_EUCLIDEAN_DISTANCE_TRANSFORM_H
 
+#include <CGAL/DF_L1_skeleton/internal/parallel_for.h>
 #include <CGAL/tags.h>
-
-#ifdef CGAL_LINKED_WITH_TBB
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-#endif
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
 #include <limits>
-#include <type_traits>
 #include <vector>
 
 namespace CGAL {
@@ -193,24 +188,16 @@ inline void windowed_pass(float* first, std::size_t count, std::size_t row_strid
   }
 }
 
-// Calls f(task, scratch) for every task in [0, tasks), in parallel with a Parallel_tag.
+// Calls f(task, scratch) for every task in [0, tasks), in parallel with a Parallel_tag;
+// the tasks of a range share one scratch.
 template <class ConcurrencyTag, class Function>
 void for_each_task(std::size_t tasks, const Function& f)
 {
-#ifdef CGAL_LINKED_WITH_TBB
-  if(std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value)
-  {
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, tasks), [&](const tbb::blocked_range<std::size_t>& r) {
-      Transform_scratch scratch;
-      for(std::size_t task = r.begin(); task != r.end(); ++task)
-        f(task, scratch);
-    });
-    return;
-  }
-#endif
-  Transform_scratch scratch;
-  for(std::size_t task = 0; task < tasks; ++task)
-    f(task, scratch);
+  for_each_range<ConcurrencyTag>(tasks, [&](std::size_t begin, std::size_t end) {
+    Transform_scratch scratch;
+    for(std::size_t task = begin; task < end; ++task)
+      f(task, scratch);
+  }, 1);
 }
 
 // In place: on input 0 at sites and EDT_INFINITY elsewhere; on output the exact squared
