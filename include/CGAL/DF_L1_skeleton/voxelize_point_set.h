@@ -237,20 +237,16 @@ void grow_face_connected(const Grid_geometry<Traits>& g, std::vector<char>& mark
   {
     row_start[r] = runs.size();
     const std::size_t base = r * nx;
-    for(std::size_t i = 0; i < nx;)
+    for(std::size_t i = 0; i < nx; ++i) // each voxel is tested once; i ends past a run
     {
-      if(!marked[base + i] && !can_enter(base + i))
-      {
-        ++i;
-        continue;
-      }
       Run run{base + i, base + i, runs.size(), false};
       for(; i < nx && (marked[base + i] || can_enter(base + i)); ++i)
       {
         run.last = base + i;
         run.marked = run.marked || marked[base + i];
       }
-      runs.push_back(run);
+      if(run.first < base + i)
+        runs.push_back(run);
     }
   }
   row_start[rows] = runs.size();
