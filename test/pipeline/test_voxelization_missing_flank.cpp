@@ -161,6 +161,61 @@ TEST_CASE("parity votes: a closed shell votes inside everywhere, an open face ke
   }
 }
 
+TEST_CASE("parity votes: the runs counted along every ray, as a walk voxel by voxel counts them", "[voxels][holes]")
+{
+  // Random blobs in a grid with unequal sides, so that rows, slices and the wrap of a
+  // row into the next one all matter.
+  DF_L1_test::internal::Rng rng(11);
+  const std::array<int, 3> dims = {{23, 17, 13}};
+  const std::size_t n = std::size_t(dims[0]) * dims[1] * dims[2];
+  auto index = [&](int i, int j, int k) { return (std::size_t(k) * dims[1] + j) * dims[0] + i; };
+  std::vector<char> shell(n, 0);
+  for(int blob = 0; blob < 40; ++blob)
+  {
+    const int c[3] = {int(rng.index(23)), int(rng.index(17)), int(rng.index(13))}, r = 1 + int(rng.index(2));
+    for(int k = (std::max)(0, c[2] - r); k <= (std::min)(12, c[2] + r); ++k)
+      for(int j = (std::max)(0, c[1] - r); j <= (std::min)(16, c[1] + r); ++j)
+        for(int i = (std::max)(0, c[0] - r); i <= (std::min)(22, c[0] + r); ++i)
+          shell[index(i, j, k)] = 1;
+  }
+  for(std::size_t v = 0; v < n; ++v) // and single voxels
+    if(rng.uniform() < 0.05)
+      shell[v] = 1;
+  const auto sequential = DF::internal::odd_crossing_votes<CGAL::Sequential_tag>(shell, dims);
+  const auto parallel = DF::internal::odd_crossing_votes<CGAL::Parallel_if_available_tag>(shell, dims);
+  CHECK(sequential == parallel);
+  std::size_t wrong = 0, odd = 0;
+  for(int k = 0; k < dims[2]; ++k)
+    for(int j = 0; j < dims[1]; ++j)
+      for(int i = 0; i < dims[0]; ++i)
+      {
+        int expected = 0;
+        for(int dk = -1; dk <= 1; ++dk)
+          for(int dj = -1; dj <= 1; ++dj)
+            for(int di = -1; di <= 1; ++di)
+            {
+              if(!di && !dj && !dk)
+                continue;
+              int runs = 0;
+              bool in_run = false;
+              for(int t = 1;; ++t)
+              {
+                const int a = i + t * di, b = j + t * dj, c = k + t * dk;
+                if(a < 0 || b < 0 || c < 0 || a >= dims[0] || b >= dims[1] || c >= dims[2])
+                  break;
+                const bool on = shell[index(a, b, c)] != 0;
+                runs += on && !in_run;
+                in_run = on;
+              }
+              expected += runs % 2;
+            }
+        odd += expected > 0 && expected < 26;
+        wrong += int(sequential[index(i, j, k)]) != expected;
+      }
+  CHECK(wrong == 0);
+  CHECK(odd > n / 4); // the case is not trivial: most voxels get some votes, not all
+}
+
 TEST_CASE("parity votes: the same votes and box means for 1 and 2 threads", "[voxels][determinism]")
 {
   // A z slice of 2500 voxels: two chunks of the box mean's y and z passes.

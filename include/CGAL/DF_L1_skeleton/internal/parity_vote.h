@@ -4,6 +4,7 @@
 #define CGAL_DF_L1_SKELETON_INTERNAL_PARITY_VOTE_H
 
 #include <CGAL/DF_L1_skeleton/internal/parallel_for.h>
+#include <CGAL/assertions.h>
 #include <CGAL/tags.h>
 
 #include <algorithm>
@@ -17,53 +18,114 @@ namespace CGAL {
 namespace DF_L1 {
 namespace internal {
 
-// Adds to `votes`, for every voxel, the number of the grid directions d = (di, dj, dk)
-// (in {-1, 0, 1}^3 \ {0}, numbered 0 to 25 in the order of dk, dj, di) in [first, last)
-// in which the ray leaving it crosses an odd number of runs of `shell` voxels. `parity`:
-// scratch of the grid's size.
-//
-// One linear pass over the grid per direction: the parity of the runs from w on is that
-// from w + d on, flipped when w starts a run (w is in the shell and w + d is not); the
-// voxels are visited so that w + d comes first.
-inline void add_odd_crossing_votes(const std::vector<char>& shell, const std::array<int, 3>& dims, int first_direction,
-                                   int last_direction, std::vector<std::uint8_t>& votes, std::vector<char>& parity)
+// The grid direction numbered `direction` (0 to 25 in the order of dk, dj, di, the
+// centre left out).
+inline std::array<int, 3> grid_direction(int direction)
 {
-  const std::ptrdiff_t nx = dims[0], ny = dims[1], nz = dims[2];
-  auto first = [](std::ptrdiff_t n, int d) { return d > 0 ? n - 1 : std::ptrdiff_t(0); };
-  for(int direction = first_direction; direction < last_direction; ++direction)
+  const int cell = direction < 13 ? direction : direction + 1; // the centre, 13, is no direction
+  return {{cell % 3 - 1, cell / 3 % 3 - 1, cell / 9 - 1}};
+}
+
+// Adds to `votes`, for every voxel, the number of the grid directions d = (di, dj, dk) in
+// `directions` in which the ray leaving the voxel crosses an odd number of runs of
+// `shell` voxels. The directions must not go both up and down along z: the parity of the
+// runs from w on is that from w + d on, flipped when w starts a run (w is in the shell
+// and w + d is not), so the z slices are visited so that w + d comes first.
+//
+// The slices are visited once for all the directions: each direction keeps the parities
+// of its last two slices, so that the grid is read and the votes written once, instead
+// of once per direction (a pass over the grid per direction, through three grid-sized
+// arrays, took about twice as long).
+inline void add_odd_crossing_votes(const std::vector<char>& shell, const std::array<int, 3>& dims,
+                                   const std::vector<int>& directions, std::vector<std::uint8_t>& votes)
+{
+  const std::ptrdiff_t nx = dims[0], ny = dims[1], nz = dims[2], slice = nx * ny;
+  int dk = 0; // the sweep goes against the directions' dk
+  for(int direction : directions)
   {
-    const int cell = direction < 13 ? direction : direction + 1; // the centre, 13, is no direction
-    const int di = cell % 3 - 1, dj = cell / 3 % 3 - 1, dk = cell / 9 - 1;
-    const std::ptrdiff_t step = (dk * ny + dj) * nx + di;
-    const std::ptrdiff_t sk = dk > 0 ? -1 : 1, sj = dj > 0 ? -1 : 1;
-    for(std::ptrdiff_t k = first(nz, dk); k >= 0 && k < nz; k += sk)
+    const int dz = grid_direction(direction)[2];
+    CGAL_precondition(dz == 0 || dk == 0 || dz == dk);
+    dk = dz != 0 ? dz : dk;
+  }
+  auto first = [](std::ptrdiff_t n, int d) { return d > 0 ? n - 1 : std::ptrdiff_t(0); };
+  // parity of the runs from the voxel on, itself included: two slices per direction
+  std::vector<char> parity(directions.size() * 2 * std::size_t(slice));
+  for(std::ptrdiff_t k = first(nz, dk); k >= 0 && k < nz; k += dk > 0 ? -1 : 1)
+  {
+    const char* s_slice = shell.data() + k * slice;
+    std::uint8_t* out_slice = votes.data() + k * slice;
+    for(std::size_t n = 0; n < directions.size(); ++n)
+    {
+      const std::array<int, 3> d = grid_direction(directions[n]);
+      const int di = d[0], dj = d[1];
+      char* p_slice = parity.data() + (2 * n + std::size_t(k & 1)) * slice;
+      const char* next_p_slice = d[2] == 0 ? p_slice : parity.data() + (2 * n + std::size_t((k & 1) ^ 1)) * slice;
+      const char* next_s_slice = s_slice + d[2] * slice;
+      if(d[2] != 0 && k + d[2] >= 0 && k + d[2] < nz)
+      {
+        // Every voxel of the slice reads the slice done before: one loop over the rows
+        // whose rays stay in the grid, as if the slice were one row (the loop
+        // vectorizes, and rows of about 100 voxels made the setup of a loop per row a
+        // large part of the cost). Then the rays that leave the grid at once: the last
+        // row, and the column that the loop wrapped into the next row.
+        const std::ptrdiff_t j0 = dj < 0 ? 1 : 0, j1 = dj > 0 ? ny - 1 : ny, off = dj * nx + di;
+        const std::ptrdiff_t lo = (std::max)(j0 * nx, -off), hi = (std::min)(j1 * nx, slice - off);
+        char* p = p_slice;
+        std::uint8_t* out = out_slice;
+        const char *s = s_slice, *next_s = next_s_slice + off, *next_p = next_p_slice + off;
+        for(std::ptrdiff_t v = lo; v < hi; ++v)
+        {
+          p[v] = char(next_p[v] ^ ((s[v] != 0) & (next_s[v] == 0)));
+          out[v] = std::uint8_t(out[v] + next_p[v]);
+        }
+        if(dj != 0)
+          for(std::ptrdiff_t v = first(ny, dj) * nx; v < first(ny, dj) * nx + nx; ++v)
+            p[v] = s[v] != 0;
+        if(di != 0)
+          for(std::ptrdiff_t j = j0; j < j1; ++j)
+          {
+            const std::ptrdiff_t v = j * nx + first(nx, di);
+            if(v >= lo && v < hi)
+              out[v] = std::uint8_t(out[v] - next_p[v]);
+            p[v] = s[v] != 0;
+          }
+        continue;
+      }
+      const std::ptrdiff_t sj = dj > 0 ? -1 : 1;
       for(std::ptrdiff_t j = first(ny, dj); j >= 0 && j < ny; j += sj)
       {
-        const std::ptrdiff_t row = (k * ny + j) * nx;
-        const char* s = shell.data() + row;
-        char* p = parity.data() + row;
-        std::uint8_t* out = votes.data() + row;
-        if(k + dk < 0 || k + dk >= nz || j + dj < 0 || j + dj >= ny)
+        const char* s = s_slice + j * nx;
+        char* p = p_slice + j * nx;
+        std::uint8_t* out = out_slice + j * nx;
+        if(k + d[2] < 0 || k + d[2] >= nz || j + dj < 0 || j + dj >= ny)
         {
           for(std::ptrdiff_t i = 0; i < nx; ++i) // every ray leaves the grid at once
             p[i] = s[i] != 0;
           continue;
         }
-        if(!dj && !dk)
+        if(!dj && !d[2])
         {
-          // Along x, each voxel needs the one before it in the row (kept in a register).
-          char next_parity = p[first(nx, di)] = s[first(nx, di)] != 0;
+          // Along x, each voxel needs the one before it in the row: a running parity in a
+          // register, without branches (their mispredictions were most of the cost of
+          // the two x directions), and no other row reads these parities. A row without
+          // shell votes 0 (most rows of a grid that is mostly exterior).
+          char any = 0;
+          for(std::ptrdiff_t i = 0; i < nx; ++i)
+            any |= s[i];
+          if(!any)
+            continue;
+          std::uint8_t next_parity = s[first(nx, di)] != 0;
           for(std::ptrdiff_t i = first(nx, di) - di; i >= 0 && i < nx; i -= di)
           {
             out[i] = std::uint8_t(out[i] + next_parity);
-            next_parity = p[i] = char(next_parity ^ (s[i] && !s[i + di]));
+            next_parity = std::uint8_t(next_parity ^ ((s[i] != 0) & (s[i + di] == 0)));
           }
           continue;
         }
         // w + d lies in a row done before: the voxels of this row are independent, and
         // the loop vectorizes. The voxel whose ray leaves the grid sideways votes 0.
-        const char* next_s = s + step;
-        const char* next_p = p + step;
+        const char* next_s = next_s_slice + (j + dj) * nx + di;
+        const char* next_p = next_p_slice + (j + dj) * nx + di;
         const std::ptrdiff_t lo = di < 0 ? 1 : 0, hi = di > 0 ? nx - 1 : nx;
         for(std::ptrdiff_t i = lo; i < hi; ++i)
         {
@@ -73,6 +135,7 @@ inline void add_odd_crossing_votes(const std::vector<char>& shell, const std::ar
         if(di != 0)
           p[first(nx, di)] = s[first(nx, di)] != 0;
       }
+    }
   }
 }
 
@@ -83,23 +146,25 @@ inline void add_odd_crossing_votes(const std::vector<char>& shell, const std::ar
 // that run along a face; a hole in the shell only changes the votes of the rays through
 // it. The ray of voxel v starts at v + d; the votes of shell voxels (which may count
 // their own run) are meaningless.
-// A pass is sequential along its direction (splitting it into dependent slabs for 2
-// threads was slower); in parallel, two threads take half of the directions each, with
-// their own counts, added at the end.
+// Two sweeps over the z slices, one down for the directions going up along z, one up for
+// those going down, each with half of the horizontal directions; in parallel, one thread
+// each, with their own counts, added at the end.
 template <class ConcurrencyTag = CGAL::Sequential_tag>
 std::vector<std::uint8_t> odd_crossing_votes(const std::vector<char>& shell, const std::array<int, 3>& dims)
 {
+  // 0-8 go down along z, 9-16 are horizontal, 17-25 go up
+  const std::vector<int> down{0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12},
+    up{13, 14, 15, 16, 17, 18, 19, 20, 21, 22, 23, 24, 25};
   std::vector<std::uint8_t> votes(shell.size(), 0);
-  std::vector<char> parity(shell.size()); // parity of the runs from the voxel on, itself included
   if(!std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value)
   {
-    add_odd_crossing_votes(shell, dims, 0, 26, votes, parity);
+    add_odd_crossing_votes(shell, dims, down, votes);
+    add_odd_crossing_votes(shell, dims, up, votes);
     return votes;
   }
   std::vector<std::uint8_t> other_votes(shell.size(), 0);
-  std::vector<char> other_parity(shell.size());
-  run_both<ConcurrencyTag>([&] { add_odd_crossing_votes(shell, dims, 0, 13, votes, parity); },
-                           [&] { add_odd_crossing_votes(shell, dims, 13, 26, other_votes, other_parity); });
+  run_both<ConcurrencyTag>([&] { add_odd_crossing_votes(shell, dims, down, votes); },
+                           [&] { add_odd_crossing_votes(shell, dims, up, other_votes); });
   for(std::size_t v = 0; v < votes.size(); ++v)
     votes[v] = std::uint8_t(votes[v] + other_votes[v]);
   return votes;
