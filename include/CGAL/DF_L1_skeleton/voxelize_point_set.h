@@ -9,6 +9,7 @@
 #include <CGAL/DF_L1_skeleton/Voxel_grid.h>
 #include <CGAL/DF_L1_skeleton/errors.h>
 #include <CGAL/DF_L1_skeleton/internal/euclidean_distance_transform.h>
+#include <CGAL/DF_L1_skeleton/internal/parallel_for.h>
 #include <CGAL/DF_L1_skeleton/internal/parity_vote.h>
 #include <CGAL/DF_L1_skeleton/internal/point_range.h>
 #include <CGAL/DF_L1_skeleton/internal/uniform_grid.h>
@@ -428,8 +429,9 @@ void sweep_exterior_with_balls(const Grid_geometry<Traits>& g, std::vector<std::
   // Bounded by L2: the ball centres only compare it with L2 and S2 <= L2.
   std::vector<float> dist =
     squared_distance_to_sites<ConcurrencyTag>(g.dims, [&](std::size_t v) { return labels[v] == B || inside[v]; }, L2);
-  std::vector<char> large_centre = ball_centres(g, labels, dist, L2);
-  std::vector<char> small_centre = ball_centres(g, labels, dist, S2);
+  std::vector<char> large_centre, small_centre;
+  run_both<ConcurrencyTag>([&] { large_centre = ball_centres(g, labels, dist, L2); },
+                           [&] { small_centre = ball_centres(g, labels, dist, S2); });
 
   // Face-step depth of the small ball's centres beyond the large ball's centres and the
   // exterior (BFS), and the deepest centre of each 6-connected region of them.
@@ -649,20 +651,29 @@ voxelize_point_set(const PointRange& points, const NamedParameters& np = paramet
 
   Voxel_grid<Traits> result;
   result.levels.push_back(internal::level_statistics(g, labels));
-  for(int level = 0; level < refinements; ++level)
-  {
-    internal::crop(g, labels, 1);
-    internal::refine(g, labels, xyz, steps);
-    result.levels.push_back(internal::level_statistics(g, labels));
-  }
+  // The sampling spacing h (in finest voxels) for the correction after the last level,
+  // measured on the second thread while the levels refine (it reads only the points).
+  // The search radius starts at half a voxel and doubles until the ball holds 6 points
+  // (the distance found does not depend on it): a first radius of 2 voxels gathered
+  // thousands of points per ball in dense clouds (1M points: about 1 s).
+  double h = 0;
+  internal::run_both<ConcurrencyTag>(
+    [&] {
+      for(int level = 0; level < refinements; ++level)
+      {
+        internal::crop(g, labels, 1);
+        internal::refine(g, labels, xyz, steps);
+        result.levels.push_back(internal::level_statistics(g, labels));
+      }
+    },
+    [&] {
+      if(refinements > 0)
+        h = internal::median_kth_neighbour_distance(xyz, 6, finest / 2) / finest;
+    });
   if(refinements > 0)
   {
-    // Radii in finest voxels. s0' = 3^refinements; h = the sampling spacing.
+    // Radii in finest voxels. s0' = 3^refinements.
     const double coarsest = std::pow(3.0, refinements);
-    // The search radius starts at half a voxel and doubles until the ball holds 6 points
-    // (the distance found does not depend on it): a first radius of 2 voxels gathered
-    // thousands of points per ball in dense clouds (1M points: about 1 s).
-    const double h = internal::median_kth_neighbour_distance(xyz, 6, finest / 2) / finest;
     const double large = (std::max)(coarsest, 2 * h), small = (std::max)(coarsest / 2, h);
     const double small_ball_volume = 4.0 / 3.0 * 3.14159265358979 * small * small * small;
     const std::vector<char> inside =
