@@ -26,6 +26,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -190,8 +191,17 @@ Contracted_samples<Traits> contract_samples(const std::vector<typename Traits::P
       attractors.push_back(to_vec3(initial.graph[v].point));
   const Uniform_grid attractor_grid(attractors, 2 * voxel);
 
+  // The pick of the samples and the gathering of the points for the data term (with
+  // the levels the first stage reads) are independent and both sequential: one each.
+  std::vector<std::size_t> picked;
+  std::optional<Gathered_input> gathered;
+  run_both<ConcurrencyTag>([&] { picked = select_samples(input, m); },
+                           [&] {
+                             gathered.emplace(input, voxel / 4);
+                             gathered->cover_radius(h0);
+                           });
   Sample_set s;
-  for(std::size_t i : select_samples(input, m))
+  for(std::size_t i : picked)
     s.x.push_back(input[i]);
   s.role.assign(s.x.size(), Sample_role::FREE);
   s.radius.assign(s.x.size(), h0);
@@ -206,7 +216,6 @@ Contracted_samples<Traits> contract_samples(const std::vector<typename Traits::P
   };
   record();
 
-  Gathered_input gathered(input, voxel / 4);
   Branch_tracer<Traits> tracer(s, guided ? &lookup : nullptr, sigma_threshold, h0,
                                guided ? junction_zones(initial.graph, lookup) : std::vector<Junction_zone>());
   int stages_without_branch = 0;
@@ -233,8 +242,8 @@ Contracted_samples<Traits> contract_samples(const std::vector<typename Traits::P
     stats.mean_radius = std::clamp(sum / double(free_radii.size()), stats.min_radius, stats.max_radius);
 
     const double cell = (std::max)(median_of(free_radii) / 2, voxel / 2);
-    gathered.cover_radius(stats.max_radius);
-    const L1_median_step step{gathered, attractors, guided ? &attractor_grid : nullptr, u};
+    gathered->cover_radius(stats.max_radius);
+    const L1_median_step step{*gathered, attractors, guided ? &attractor_grid : nullptr, u};
     for(int it = 0; it < max_iterations; ++it)
     {
       const std::vector<Vec3> previous = s.x;
