@@ -458,7 +458,8 @@ inline void write_report(const std::vector<Record>& all, const std::string& out_
         // the projection step alone when the results have it (older results: the contraction)
         const char* key = p.second[1].has("projection_seconds") && p.second[2].has("projection_seconds") ? "projection_seconds" : "t.contraction";
         const double speedup = p.second[1].number(key) / p.second[2].number(key);
-        md << "- " << fixed(p.first, 0) << " points: projection step (the fixed-point iterations) "
+        md << "- " << fixed(p.first, 0) << " points (" << fixed(p.second[1].number("runs"), 0)
+           << " runs each): projection step (the fixed-point iterations) "
            << fixed(speedup, 2) << "x faster on 2 threads, contraction stage "
            << fixed(p.second[1].number("t.contraction") / p.second[2].number("t.contraction"), 2) << "x, whole pipeline "
            << fixed(p.second[1].number("t.total") / p.second[2].number("t.total"), 2) << "x.\n";

@@ -109,7 +109,8 @@ TEST_CASE("benchmark report: targets checked against the figures, plots written"
   CHECK(report.find("**1.20** from 100k points on") != std::string::npos);
   CHECK(report.find("| 1000000 points < 10 s | 15.8 s | **not met** |") != std::string::npos);
   CHECK(report.find("N^1.20 | **not met** |") != std::string::npos);
-  CHECK(report.find("projection step (the fixed-point iterations) 1.80x faster on 2 threads, contraction stage 1.43x,"
+  CHECK(report.find("35000 points (5 runs each): projection step (the fixed-point iterations) 1.80x faster on 2 threads,"
+                     " contraction stage 1.43x,"
                      " whole pipeline 1.33x") != std::string::npos);
   CHECK(report.find("| projection step >= 1.7x faster on 2 threads than on 1 | 1.80x | met |") != std::string::npos);
   CHECK(std::filesystem::file_size(dir / "scaling_points.svg") > 500);
