@@ -174,6 +174,28 @@ TEST_CASE("distance transform: exact against brute force, with and without a bou
   }
 }
 
+TEST_CASE("distance transform: exact where needed, bounded first and unbounded when a needed voxel is beyond", "[distance]")
+{
+  namespace I = CGAL::DF_L1::internal;
+  // Sites: the plane z = 0. Needed: the voxels of the plane z = depth, at distance depth^2.
+  const std::array<int, 3> dims = {{12, 10, 14}};
+  const std::size_t slice = std::size_t(dims[0]) * dims[1];
+  const auto site = [&](std::size_t v) { return v < slice; };
+  const std::vector<float> unbounded = I::squared_distance_to_sites<CGAL::Sequential_tag>(dims, site);
+  for(int depth : {3, 12})
+  {
+    const auto needed = [&](std::size_t v) { return v / slice == std::size_t(depth); };
+    const std::vector<float> d = I::squared_distance_to_sites_at<CGAL::Parallel_if_available_tag>(dims, site, needed, 25.f);
+    INFO("depth " << depth);
+    for(std::size_t v = 0; v < d.size(); ++v)
+      if(needed(v))
+        REQUIRE(d[v] == float(depth * depth)); // beyond the first bound (25) at depth 12
+    // the bounded transform is kept when it is enough: nothing is computed beyond the bound
+    CHECK((depth == 3) == (std::count(d.begin(), d.end(), I::EDT_INFINITY) > 0));
+    CHECK((depth == 3) != (d == unbounded));
+  }
+}
+
 namespace {
 
 struct Outlier_result

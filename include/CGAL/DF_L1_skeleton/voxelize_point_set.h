@@ -368,17 +368,22 @@ std::vector<char> voted_interior(const Grid_geometry<Traits>& g, const std::vect
   // Where the flood leaked into a part, it also left a film of exterior voxels on the
   // shell between the inside and the points; a shell voxel nearer to the inside than to
   // any voxel off the shell outside it belongs to the part.
-  const std::vector<float> to_outside =
-    squared_distance_to_sites<ConcurrencyTag>(g.dims, [&](std::size_t v) { return !inside[v] && !shell[v]; });
+  // The distance to the outside only matters on the shell's exterior voxels, a few
+  // voxels from the outside: a small first bound makes the transform take windowed
+  // minima (about half the time of the unbounded one on a 35k-point cloud).
+  const auto film = [&](std::size_t v) { return shell[v] && labels[v] == E; };
+  const float near_bound = float((std::min)(12.0, 2 * band + 2) * (std::min)(12.0, 2 * band + 2));
+  const std::vector<float> to_outside = squared_distance_to_sites_at<ConcurrencyTag>(
+    g.dims, [&](std::size_t v) { return !inside[v] && !shell[v]; }, film, near_bound);
   // The distance to the inside only matters below the largest of these.
   float farthest_outside = 0;
   for(std::size_t v = 0; v < n; ++v)
-    if(shell[v] && labels[v] == E)
+    if(film(v))
       farthest_outside = (std::max)(farthest_outside, to_outside[v]);
   const std::vector<float> to_inside =
     squared_distance_to_sites<ConcurrencyTag>(g.dims, [&](std::size_t v) { return inside[v]; }, farthest_outside);
   for(std::size_t v = 0; v < n; ++v)
-    if(shell[v] && labels[v] == E && to_inside[v] < to_outside[v])
+    if(film(v) && to_inside[v] < to_outside[v])
       inside[v] = 1;
   return inside;
 }

@@ -276,6 +276,21 @@ std::vector<float> squared_distance_to_sites(const std::array<int, 3>& dims, con
   return d;
 }
 
+// Squared distances to the nearest site, exact at the voxels where `needed(v)` holds
+// (elsewhere they may be EDT_INFINITY beyond `first_bound`): the bounded transform
+// first, cheaper with a small bound, and the unbounded one only when a needed voxel lies
+// beyond the bound.
+template <class ConcurrencyTag, class IsSite, class Needed>
+std::vector<float> squared_distance_to_sites_at(const std::array<int, 3>& dims, const IsSite& is_site,
+                                                const Needed& needed, float first_bound)
+{
+  std::vector<float> d = squared_distance_to_sites<ConcurrencyTag>(dims, is_site, first_bound);
+  for(std::size_t v = 0; v < d.size(); ++v)
+    if(d[v] == EDT_INFINITY && needed(v))
+      return squared_distance_to_sites<ConcurrencyTag>(dims, is_site);
+  return d;
+}
+
 } // namespace internal
 } // namespace DF_L1
 } // namespace CGAL
