@@ -372,7 +372,8 @@ std::vector<char> voted_interior(const Grid_geometry<Traits>& g, const std::vect
   // voxels from the outside: a small first bound makes the transform take windowed
   // minima (about half the time of the unbounded one on a 35k-point cloud).
   const auto film = [&](std::size_t v) { return shell[v] && labels[v] == E; };
-  const float near_bound = float((std::min)(12.0, 2 * band + 2) * (std::min)(12.0, 2 * band + 2));
+  const double near_radius = (std::min)(12.0, 2 * band + 2);
+  const float near_bound = float(near_radius * near_radius);
   const std::vector<float> to_outside = squared_distance_to_sites_at<ConcurrencyTag>(
     g.dims, [&](std::size_t v) { return !inside[v] && !shell[v]; }, film, near_bound);
   // The distance to the inside only matters below the largest of these.

@@ -18,27 +18,9 @@ namespace CGAL {
 namespace DF_L1 {
 namespace internal {
 
-// f(i) for i in [0, n), with TBB when ConcurrencyTag is Parallel_tag. Each f(i) must
-// write only its own outputs, so that the result does not depend on the threads.
-template <class ConcurrencyTag, class Function>
-void for_each_index(std::size_t n, const Function& f, std::size_t grain = 512)
-{
-#ifdef CGAL_LINKED_WITH_TBB
-  if(std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value)
-  {
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, grain), [&](const tbb::blocked_range<std::size_t>& r) {
-      for(std::size_t i = r.begin(); i != r.end(); ++i)
-        f(i);
-    });
-    return;
-  }
-#endif
-  for(std::size_t i = 0; i < n; ++i)
-    f(i);
-}
-
 // f(begin, end) over consecutive ranges that cover [0, n), of about `grain` indices each
-// with TBB: for loops whose iterations can share scratch memory along a range.
+// with TBB (when ConcurrencyTag is Parallel_tag): for loops whose iterations can share
+// scratch memory along a range.
 template <class ConcurrencyTag, class Function>
 void for_each_range(std::size_t n, const Function& f, std::size_t grain = 512)
 {
@@ -51,6 +33,17 @@ void for_each_range(std::size_t n, const Function& f, std::size_t grain = 512)
   }
 #endif
   f(std::size_t(0), n);
+}
+
+// f(i) for i in [0, n), with TBB when ConcurrencyTag is Parallel_tag. Each f(i) must
+// write only its own outputs, so that the result does not depend on the threads.
+template <class ConcurrencyTag, class Function>
+void for_each_index(std::size_t n, const Function& f, std::size_t grain = 512)
+{
+  for_each_range<ConcurrencyTag>(n, [&](std::size_t begin, std::size_t end) {
+    for(std::size_t i = begin; i < end; ++i)
+      f(i);
+  }, grain);
 }
 
 // f() and g(), at the same time with TBB when ConcurrencyTag is Parallel_tag; they must
