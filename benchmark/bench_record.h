@@ -126,6 +126,33 @@ inline Spread spread(std::vector<double> x)
   return s;
 }
 
+/// Numbers as one comma-separated field, and back.
+inline std::string join_numbers(const std::vector<double>& x)
+{
+  std::ostringstream os;
+  os.precision(6);
+  for(std::size_t i = 0; i < x.size(); ++i)
+    os << (i ? "," : "") << x[i];
+  return os.str();
+}
+
+inline std::vector<double> split_numbers(const std::string& text)
+{
+  std::vector<double> x;
+  std::istringstream is(text);
+  std::string item;
+  while(std::getline(is, item, ','))
+    try
+    {
+      x.push_back(std::stod(item));
+    }
+    catch(const std::exception&)
+    {
+      return {}; // not a list of numbers
+    }
+  return x;
+}
+
 } // namespace DF_L1_bench
 
 #endif // DF_L1_BENCHMARK_BENCH_RECORD_H

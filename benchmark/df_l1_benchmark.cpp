@@ -240,6 +240,9 @@ public:
     std::remove(output_.c_str());
     r_.set("t.refinement", clock_.median("contraction") + clock_.median("skeleton"));
     r_.set("projection_seconds", DF_L1_bench::spread(projection_).median);
+    // every run's, in run order: runs on different numbers of threads alternate, so the
+    // report can pair them
+    r_.set("projection_runs", DF_L1_bench::join_numbers(projection_));
     clock_.write(r_);
     return r_;
   }

@@ -103,10 +103,11 @@ for m in 500 1500 5000; do
   run "samples/$m" df_l1 "$(input stick_figure clean 35000)" --shape stick_figure --samples $m
 done
 # The 1- and 2-thread runs alternate (one benchmark process), so that the speed-up does
-# not follow the drift of the machine's speed. At 35,000 points the projection step is
-# about 0.1 s, and single runs on a shared machine scatter by 20 %: three times the runs.
+# not follow the drift of the machine's speed. The projection step is about 0.05 to
+# 0.1 s at both sizes, and single runs on a shared machine scatter by 20 to 40 %: three
+# times the runs (5 runs at 300,000 points gave 1.41x where 15 gave 1.51x to 1.67x).
+thread_runs=$((3 * runs))
 for n in 35000 300000; do
-  [ $n -eq 35000 ] && thread_runs=$((3 * runs)) || thread_runs=$runs
   run "threads/{threads}-$n" df_l1 "$(input stick_figure clean $n)" --shape stick_figure --threads 1,2 --runs $thread_runs
 done
 # Real scans, when the shared data folder is there.
