@@ -462,8 +462,9 @@ inline void write_report(const std::vector<Record>& all, const std::string& out_
         // follows the machine's drift less than the ratio of the medians.
         const std::vector<double> one = split_numbers(p.second[1].text("projection_runs"));
         const std::vector<double> two = split_numbers(p.second[2].text("projection_runs"));
+        const bool paired = !one.empty() && one.size() == two.size();
         double speedup = of_medians;
-        if(!one.empty() && one.size() == two.size())
+        if(paired)
         {
           std::vector<double> ratios;
           for(std::size_t i = 0; i < one.size(); ++i)
@@ -472,7 +473,7 @@ inline void write_report(const std::vector<Record>& all, const std::string& out_
         }
         md << "- " << fixed(p.first, 0) << " points (" << fixed(p.second[1].number("runs"), 0)
            << " runs each): projection step (the fixed-point iterations) " << fixed(speedup, 2) << "x faster on 2 threads";
-        if(speedup != of_medians)
+        if(paired)
           md << " (median over the pairs of alternating runs; ratio of the medians " << fixed(of_medians, 2) << "x)";
         md << ", contraction stage "
            << fixed(p.second[1].number("t.contraction") / p.second[2].number("t.contraction"), 2) << "x, whole pipeline "
