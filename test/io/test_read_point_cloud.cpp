@@ -453,6 +453,145 @@ TEST_CASE("off: malformed inputs", "[io][read][off][errors]")
   require_read_error(dir.write("5d.off", "nOFF\n5\n1 0 0\n1 2 3 4 5\n"), {"dimension 5"});
 }
 
+TEST_CASE("off: headerless files, six columns give normals", "[io][read][off]")
+{
+  Temp_dir dir;
+  SECTION("x y z nx ny nz on every line, like fertility_headerless.off")
+  {
+    const Cloud pc = read_unmodified(dir.write("h6.off",
+                                               "0.8 -0.11 -0.009 0.92572 -0.37630 0.03801\n"
+                                               "0.79 -0.1119 -0.0046 0 0 1\n"
+                                               "\n# a comment\n"
+                                               "1 2 3 0 1 0\n"));
+    REQUIRE(pc.points.size() == 3);
+    REQUIRE(pc.normals.size() == 3);
+    check_point(pc.points[0], 0.8, -0.11, -0.009);
+    check_point(pc.points[2], 1, 2, 3);
+    check_vector(pc.normals[1], 0, 0, 1);
+    check_vector(pc.normals[2], 0, 1, 0);
+  }
+  SECTION("a first line of six integers is a vertex, not a counts line; CRLF")
+  {
+    const Cloud pc = read_unmodified(dir.write("h6int.off", "0 0 0 0 0 1\r\n-1 2 3 1 0 0\r\n"));
+    REQUIRE(pc.points.size() == 2);
+    REQUIRE(pc.normals.size() == 2);
+    check_point(pc.points[1], -1, 2, 3);
+    check_vector(pc.normals[0], 0, 0, 1);
+  }
+  SECTION("NaN normals drop all normals, points are kept")
+  {
+    const Cloud pc = read_unmodified(dir.write("h6nan.off", "0.5 0 0 0 0 1\n1 1 1 nan 0 0\n"));
+    REQUIRE(pc.points.size() == 2);
+    CHECK(pc.normals.empty());
+  }
+}
+
+TEST_CASE("off: headerless files, three columns give points only", "[io][read][off]")
+{
+  Temp_dir dir;
+  const Cloud pc = read_unmodified(dir.write("h3.off",
+                                             "\xEF\xBB\xBF" "0.5 -1.25 2\n"
+                                             "3 4 5\n"
+                                             "  6\t7 8.5e-1  # trailing comment\n"));
+  REQUIRE(pc.points.size() == 3);
+  CHECK(pc.normals.empty());
+  check_point(pc.points[0], 0.5, -1.25, 2);
+  check_point(pc.points[1], 3, 4, 5);
+  check_point(pc.points[2], 6, 7, 0.85);
+}
+
+TEST_CASE("off: NOFF header with 3-number vertex lines gives points only", "[io][read][off]")
+{
+  Temp_dir dir;
+  SECTION("'NOFF' and an 'N 0' counts line, like misaligned_scan.off")
+  {
+    const Cloud pc = read_unmodified(dir.write("m.off", "NOFF\n3 0\n1 2 3\n4 5 6\n\n7 8 9\n"));
+    REQUIRE(pc.points.size() == 3);
+    CHECK(pc.normals.empty());
+    check_point(pc.points[2], 7, 8, 9);
+  }
+  SECTION("other N keywords, counts on the keyword line")
+  {
+    const Cloud pc = read_unmodified(dir.write("m2.off", "CNOFF 2 0 0\n1 2 3\n4 5 6\n"));
+    REQUIRE(pc.points.size() == 2);
+    CHECK(pc.normals.empty());
+    CHECK(read_unmodified(dir.write("m3.off", "NOFF_SK\n1 0 0\n1 2 3\n")).normals.empty());
+  }
+  SECTION("faces after the vertices are still not read")
+  {
+    const Cloud pc = read_unmodified(dir.write("m4.off", "NOFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"));
+    REQUIRE(pc.points.size() == 3);
+    CHECK(pc.normals.empty());
+  }
+  SECTION("the vertex count is honoured")
+  {
+    require_read_error(dir.write("m5.off", "NOFF\n4 0\n1 2 3\n4 5 6\n7 8 9\n"),
+                       {"header says 4 vertices but the file ends after 3"});
+    require_read_error(dir.write("m6.off", "NOFF\n1000000000000 0\n1 2 3\n"),
+                       {"header says 1000000000000 vertices but the file ends after 1"});
+  }
+  SECTION("a vertex line of another width is an error naming the vertex and line")
+  {
+    require_read_error(dir.write("m7.off", "NOFF\n3 0\n1 2 3\n4 5 6 0 0 1\n7 8 9\n"),
+                       {"vertex 2 of 3", "line 4", "expected 3 numbers", "line 3", "'NOFF'"});
+    require_read_error(dir.write("m8.off", "NOFF\n3 0\n1 2 3\n4 5 6\n7 8 9 1\n"),
+                       {"vertex 3 of 3", "line 5", "got 4"});
+    require_read_error(dir.write("m9.off", "NOFF\n2 0\n1 2 3\n4 5\n"),
+                       {"vertex 2 of 2", "line 4", "got 2 numbers"});
+  }
+}
+
+TEST_CASE("off: headerless files with inconsistent or bad lines are errors", "[io][read][off][errors]")
+{
+  Temp_dir dir;
+  require_read_error(dir.write("mix63.off", "0.5 0 0 0 0 1\n1 1 1 0 1 0\n2 2 2\n"),
+                     {"line 3", "expected 6 numbers", "line 1", "headerless", "got 3"});
+  require_read_error(dir.write("mix36.off", "0.5 0 0\n\n# c\n1 1 1 0 1 0\n"),
+                     {"line 4", "expected 3 numbers", "line 1", "got 6"});
+  // faces cannot follow: without counts they would be taken for vertices
+  require_read_error(dir.write("faces.off", "0.5 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"),
+                     {"line 4", "got 4"});
+  require_read_error(dir.write("four.off", "0.5 0 0 7\n1 0 0 7\n"), {"line 1", "3 or 6 numbers", "got 4"});
+  require_read_error(dir.write("seven.off", "0.5 0 0 0 0 1 9\n"), {"line 1", "3 or 6 numbers"});
+  require_read_error(dir.write("two.off", "0.5 1.5\n1 2 3\n"), {"line 1", "got 2 numbers"});
+  require_read_error(dir.write("short.off", "0.5 0 0\n1 x\n"), {"line 2", "'x'"});
+  require_read_error(dir.write("text.off", "0.5 0 0\n1 two 3\n"), {"line 2", "'two'"});
+  require_read_error(dir.write("nan.off", "0.5 0 0\n1 nan 3\n"), {"line 2", "not finite"});
+  require_read_error(dir.write("nbad.off", "0.5 0 0 0 0 1\n1 2 3 0 q 1\n"), {"line 2", "'q'"});
+  // a first line of 1 to 3 non-negative integers is a counts line without its keyword
+  require_read_error(dir.write("counts3.off", "15002 0 0\n0.5 0 0\n"), {"line 1", "OFF", "counts line"});
+  require_read_error(dir.write("counts2.off", "15002 0\n0.5 0 0\n"), {"line 1", "OFF"});
+  require_read_error(dir.write("counts1.off", "# c\n2\n0.5 0 0\n1 1 1\n"), {"line 2", "OFF"});
+}
+
+TEST_CASE("read_point_cloud: the shared headerless and misaligned OFF files load", "[io][read][data]")
+{
+  std::string dir;
+  if(!shared_data_available(dir)) {
+    WARN("skipped: shared data directory (DF_L1_SHARED_DATA_DIR) not found");
+    return;
+  }
+  struct Expected
+  {
+    const char* file;
+    std::size_t points;
+    bool normals;
+  };
+  const Expected expected[] = {{"fertility_headerless.off", 4832, true},
+                               {"misaligned_scan.off", 15002, false}};
+  for(const Expected& e : expected) {
+    const std::string path = (fs::path(dir) / e.file).string();
+    INFO(path);
+    if(!fs::exists(path)) {
+      WARN("skipped: " << path << " not found");
+      continue;
+    }
+    const Cloud pc = read_unmodified(path);
+    CHECK(pc.points.size() == e.points);
+    CHECK(pc.normals.size() == (e.normals ? e.points : 0));
+  }
+}
+
 // ===========================================================================
 // PLY
 // ===========================================================================

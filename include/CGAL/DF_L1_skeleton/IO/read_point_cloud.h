@@ -173,7 +173,8 @@ Point_cloud<Kernel> read_ply_point_cloud(std::istream& in, const std::string& na
 /// \ingroup PkgDFL1SkeletonRef
 /// Reads the vertices of an ASCII OFF file as a point cloud.
 ///
-/// - The first token must contain `OFF`; the letters before it are the usual
+/// - The first token must contain `OFF` (or be a number, see headerless files
+///   below); the letters before it are the usual
 ///   Geomview prefixes (`ST`, `C`, `N`, `n`), and any suffix is accepted
 ///   (`OFF`, `NOFF`, `COFF`, `NCOFF`, `CNOFF`, `NOFF_SK`...). `nOFF` is
 ///   accepted with dimension 3 only; `4OFF` and binary OFF (`OFF BINARY`) are
@@ -182,16 +183,30 @@ Point_cloud<Kernel> read_ply_point_cloud(std::istream& in, const std::string& na
 ///   line, as `V F E`, `V F` or just `V`. Only `V` is used: faces are not read.
 /// - Blank lines and `#` comments are skipped.
 /// - Each of the `V` following lines starts with `x y z`. When the keyword has
-///   the `N` prefix, the next three values are the normal and must be present
-///   (a shorter line is an error). Further values (colours, texture
-///   coordinates) are ignored.
+///   the `N` prefix, the number of values on the first vertex line decides:
+///   with 6 or more, the next three values are the normal and must be present
+///   on every vertex line (a shorter line is an error); with exactly 3, the
+///   file has no normals despite its keyword (some writers put `NOFF` on plain
+///   `x y z` files), and every one of the `V` vertex lines must then have
+///   exactly 3 values (any other width is an error naming the vertex and the
+///   line). Further values (colours, texture coordinates) are ignored.
 /// - A file with fewer vertex lines than announced is an error:
 ///   `"header says V vertices but the file ends after M"`.
+/// - **Headerless files:** when the first token is a number (no keyword), the
+///   file has no header and no counts: every content line is a vertex,
+///   `x y z` or `x y z nx ny nz`, and the first line's width (3 or 6) must be
+///   that of every line; any other width, on the first line or on a later one
+///   (a face line, say), is an error naming the line. All the lines of the
+///   file are read. A first line of 1 to 3 non-negative integers only (such as
+///   `3 0 0`) reads as the counts line of a header whose keyword is missing and
+///   is an error, as before: such a line cannot be told from a vertex with
+///   certainty.
 ///
 /// \tparam Kernel a CGAL kernel providing `Point_3` and `Vector_3`
 /// \param in the stream to read to its end
 /// \param name_for_messages how the input is named in error messages
-/// \returns the points, and normals for `N`-prefixed keywords
+/// \returns the points, and normals when the vertex lines have them
+///          (`N`-prefixed keyword with 6 values, or headerless with 6 columns)
 /// \throws Read_error if the stream cannot be read or the content is invalid
 template <class Kernel>
 Point_cloud<Kernel> read_off_point_cloud(std::istream& in, const std::string& name_for_messages)

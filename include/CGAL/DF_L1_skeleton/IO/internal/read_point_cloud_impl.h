@@ -566,6 +566,81 @@ inline bool next_content_line(Line_reader& lines, std::string_view& content)
   return false;
 }
 
+/// Whether a first content line is made of 1 to 3 non-negative integers only,
+/// i.e. reads as the counts line `V [F [E]]` of a header whose keyword is missing.
+inline bool looks_like_counts_line(std::string_view line)
+{
+  const Line_tokens<4> t(line);
+  if(t.size == 0 || t.size > 3)
+    return false;
+  for(std::size_t i = 0; i < t.size; ++i) {
+    std::uint64_t unused;
+    if(!parse_count(t.tok[i], unused))
+      return false;
+  }
+  return true;
+}
+
+/// A headerless OFF file: no keyword and no counts line, every content line is
+/// a vertex `x y z` or `x y z nx ny nz`, with the same width on every line (the
+/// first vertex line sets it). `line` is the first content line, already read.
+template <class Cloud>
+void parse_headerless_off(std::string_view buf, Line_reader& lines, std::string_view line,
+                          const std::string& name, Cloud& out)
+{
+  out.points.reserve(max_text_points(buf, lines.position()) + 1);
+  std::size_t columns = 0; // 3 or 6, from the first line
+  std::size_t first_line = 0;
+  bool normals_finite = true;
+  do {
+    const auto where = [&lines] { return line_where(lines.line_number()); };
+    const Line_tokens<7> t(line);
+    if(columns == 0) {
+      if(t.size != 3 && t.size != 6) {
+        if(t.size < 3)
+          fail_short_line(t.tok.data(), t.size, name, where(),
+                          "3 or 6 numbers (x y z or x y z nx ny nz) on each line of a "
+                          "headerless OFF file");
+        fail(name, where(),
+             std::string("expected 3 or 6 numbers (x y z or x y z nx ny nz) on each line of a "
+                         "headerless OFF file, got ") +
+                 (t.size == 7 ? "7 or more" : std::to_string(t.size)));
+      }
+      columns = t.size;
+      first_line = lines.line_number();
+      if(columns == 6)
+        out.normals.reserve(out.points.capacity());
+    } else if(t.size != columns) {
+      if(t.size < 3)
+        for(std::size_t i = 0; i < t.size; ++i) { // a non-number says more than the count
+          double unused;
+          const Number_status st = parse_double(t.tok[i], unused);
+          if(st != Number_status::ok)
+            fail(name, where(), number_error(t.tok[i], st));
+        }
+      fail(name, where(),
+           "expected " + std::to_string(columns) +
+               (columns == 6 ? " numbers (x y z nx ny nz)" : " numbers (x y z)") +
+               " as on line " + std::to_string(first_line) +
+               ", the first line of this headerless OFF file, got " +
+               (t.size == 7 ? std::string("7 or more") : std::to_string(t.size)));
+    }
+    append(out.points, parse_coordinates(t.tok.data(), name, where));
+    if(columns == 6) {
+      std::array<double, 3> nv;
+      bool finite;
+      std::size_t bad = 0;
+      const Number_status st = parse_normal(t.tok.data() + 3, nv, finite, bad);
+      if(st != Number_status::ok)
+        fail(name, where(), number_error(t.tok[3 + bad], st));
+      normals_finite = normals_finite && finite;
+      append(out.normals, nv);
+    }
+  } while(next_content_line(lines, line));
+  if(!normals_finite)
+    out.normals.clear();
+}
+
 template <class Cloud>
 void parse_off(std::string_view buf, const std::string& name, Cloud& out)
 {
@@ -574,6 +649,24 @@ void parse_off(std::string_view buf, const std::string& name, Cloud& out)
   std::string_view line;
   if(!next_content_line(lines, line))
     fail(name, "", "empty file (expected an 'OFF' header line)");
+
+  // No keyword: a first token that is a number starts a headerless list of
+  // vertex lines, unless the line reads as a counts line (1 to 3 non-negative
+  // integers): then the keyword is missing and the file is refused, as a counts
+  // line cannot be told from a vertex line with certainty.
+  {
+    const Line_tokens<1> first(line);
+    if(is_number(first.tok[0])) {
+      if(looks_like_counts_line(line))
+        fail(name, line_where(lines.line_number()),
+             "expected an OFF header keyword ('OFF', 'NOFF', 'COFF'...), got " +
+                 quote_token(first.tok[0]) +
+                 " (this line of integers reads as a counts line without its keyword; a "
+                 "headerless OFF file must start with a vertex line)");
+      parse_headerless_off(buf, lines, line, name, out);
+      return;
+    }
+  }
 
   // Keyword: [ST][C][N][4][n]OFF plus any suffix ("NOFF_SK"...), then optionally
   // BINARY and the counts on the same line.
@@ -651,9 +744,12 @@ void parse_off(std::string_view buf, const std::string& name, Cloud& out)
     fail(name, counts_where, "no points (the header says 0 vertices)");
 
   out.points.reserve(capped_reserve(n, max_text_points(buf, lines.position())));
-  if(has_normals)
-    out.normals.reserve(out.points.capacity());
   bool normals_finite = true;
+  // With an N keyword, the first vertex line decides: 6 or more values give the
+  // normals, required on every vertex line; exactly 3 (x y z) mean the writer
+  // put the N without the normals, and every vertex line must then have 3.
+  bool read_normals = has_normals;
+  std::size_t first_vertex_line = 0;
 
   for(std::uint64_t i = 0; i < n; ++i) {
     if(!next_content_line(lines, line))
@@ -664,12 +760,24 @@ void parse_off(std::string_view buf, const std::string& name, Cloud& out)
     const Line_tokens<6> t(line);
     if(t.size < 3)
       fail_short_line(t.tok.data(), t.size, name, where(), "at least 3 numbers (x y z)");
-    if(has_normals && t.size < 6)
+    if(has_normals && i == 0) {
+      first_vertex_line = lines.line_number();
+      read_normals = t.size != 3;
+      if(read_normals)
+        out.normals.reserve(out.points.capacity());
+    }
+    if(read_normals && t.size < 6)
       fail(name, where(),
            "expected 6 numbers (x y z nx ny nz) since the keyword is " + quote_token(keyword) +
                ", got " + std::to_string(t.size));
+    if(has_normals && !read_normals && t.size != 3)
+      fail(name, where(),
+           "expected 3 numbers (x y z) as on line " + std::to_string(first_vertex_line) +
+               ", the first vertex line (the keyword " + quote_token(keyword) +
+               " announces normals but that line has none), got " +
+               (t.size == 6 ? std::string("6 or more") : std::to_string(t.size)));
     append(out.points, parse_coordinates(t.tok.data(), name, where));
-    if(has_normals) {
+    if(read_normals) {
       std::array<double, 3> nv;
       bool finite;
       std::size_t bad = 0;
