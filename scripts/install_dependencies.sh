@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
-# Installs the Debian packages DF_L1_skeleton needs, if any is missing.
+# Installs the Debian packages DF_L1_skeleton needs, if any is missing, and the extra
+# packages named as arguments (e.g. imagemagick for the quality script's contact sheets).
 # Uses apt-get directly as root, sudo otherwise, and says what it does.
 set -euo pipefail
-packages=(cmake g++ make libcgal-dev libeigen3-dev libboost-graph-dev libtbb-dev catch2 doxygen librsvg2-bin)
+packages=(cmake g++ make libcgal-dev libeigen3-dev libboost-graph-dev libtbb-dev catch2 doxygen librsvg2-bin "$@")
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -387,7 +387,8 @@ Skeleton_quality measure_quality(const Shape& shape, const Graph& g, double voxe
   double max_tolerance = options.coverage_voxels * voxel_size;
   for(const Skeleton_polyline& pl : axis)
     for(double r : pl.radii)
-      max_tolerance = std::max(max_tolerance, options.coverage_radius_fraction * r);
+      max_tolerance = std::max({max_tolerance, options.coverage_radius_fraction * r,
+                                options.coverage_radius_fraction * pl.sheet_half_width});
   std::vector<std::pair<V3, V3>> segments;
   segments.reserve(edges.size() + n);
   for(const auto& e : edges)
@@ -401,8 +402,9 @@ Skeleton_quality measure_quality(const Shape& shape, const Graph& g, double voxe
     for(std::size_t i = 0; i + 1 < pl.points.size(); ++i) {
       const V3 a = internal::to_v3(pl.points[i]), b = internal::to_v3(pl.points[i + 1]);
       const double length = internal::norm(b - a);
-      const double tolerance = std::max(options.coverage_voxels * voxel_size,
-                                        options.coverage_radius_fraction * 0.5 * (pl.radii[i] + pl.radii[i + 1]));
+      const double tolerance = std::max({options.coverage_voxels * voxel_size,
+                                         options.coverage_radius_fraction * 0.5 * (pl.radii[i] + pl.radii[i + 1]),
+                                         options.coverage_radius_fraction * pl.sheet_half_width});
       axis_length += length;
       if(grid.distance_within(0.5 * (a + b), tolerance) <= tolerance)
         covered += length;

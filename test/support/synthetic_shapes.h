@@ -135,11 +135,13 @@ private:
 /// One primitive of a shape, with its exact signed distance, axis and surface sampling.
 struct Primitive
 {
-  enum Kind { round_cone, torus, sphere };
+  enum Kind { round_cone, torus, sphere, slab };
   Kind kind = sphere;
-  V3 a, b;               ///< round cone: axis ends; torus, sphere: `a` is the centre
-  double ra = 0, rb = 0; ///< round cone: radii at a and b; sphere: `ra`; torus: `ra` major, `rb` minor
-  V3 u, v, w;            ///< frame; `w` is the cone axis direction a->b or the torus axis
+  V3 a, b;               ///< round cone: axis ends; torus, sphere, slab: `a` is the centre
+  double ra = 0, rb = 0; ///< round cone: radii at a and b; sphere: `ra`; torus: `ra` major, `rb` minor;
+                         ///< slab: `ra` the half thickness
+  V3 u, v, w;            ///< frame; `w` is the cone axis direction a->b, the torus axis or the slab normal
+  double half_u = 0, half_v = 0; ///< slab: half extents of its rectangle along u and v
   double length = 0;     ///< round cone |b - a|
   double sin_a = 0, cos_a = 1; ///< round cone: slope of the flank, sin = (ra - rb) / length
 
@@ -172,6 +174,27 @@ struct Primitive
     t.w = normalized(axis);
     complete_frame(t.w, t.u, t.v);
     return t;
+  }
+  /// The points within `half_thickness` of the rectangle centred at `centre` with half
+  /// extents `half_u` along the unit vector `u` and `half_v` along `v` (orthogonal to u):
+  /// a plate with rounded rims.
+  static Primitive make_slab(const V3& centre, const V3& u, const V3& v, double half_u, double half_v,
+                             double half_thickness)
+  {
+    if(!(half_u > 0 && half_v > 0 && half_thickness > 0))
+      throw std::invalid_argument("slab: extents and thickness must be positive");
+    if(!(norm(cross(normalized(u), normalized(v))) > 1e-6))
+      throw std::invalid_argument("slab: u and v must not be parallel");
+    Primitive s;
+    s.kind = slab;
+    s.a = centre;
+    s.u = normalized(u);
+    s.v = normalized(v - dot(v, s.u) * s.u);
+    s.w = cross(s.u, s.v);
+    s.half_u = half_u;
+    s.half_v = half_v;
+    s.ra = half_thickness;
+    return s;
   }
   static Primitive make_sphere(const V3& centre, double radius)
   {
@@ -211,6 +234,8 @@ struct Primitive
       const double rho = norm(pc - h * w);
       return std::sqrt((rho - ra) * (rho - ra) + h * h) - rb;
     }
+    case slab:
+      return norm(p - nearest_axis_point(p)) - ra;
     default:
       return norm(p - a) - ra;
     }
@@ -228,6 +253,10 @@ struct Primitive
       const double rho = norm(radial);
       // On the axis line every circle point is nearest; pick one deterministically.
       return a + ra * (rho > 1e-300 ? (1.0 / rho) * radial : u);
+    }
+    case slab: { // the plate's mid rectangle stands for its (2D) medial axis
+      const V3 d = p - a;
+      return a + std::clamp(dot(d, u), -half_u, half_u) * u + std::clamp(dot(d, v), -half_v, half_v) * v;
     }
     default:
       return a;
@@ -249,13 +278,20 @@ struct Primitive
       const double ez = ra * std::sqrt(std::max(0.0, 1 - w.z * w.z)) + rb;
       return CGAL::Bbox_3(a.x - ex, a.y - ey, a.z - ez, a.x + ex, a.y + ey, a.z + ez);
     }
+    case slab: {
+      const double ex = half_u * std::abs(u.x) + half_v * std::abs(v.x) + ra;
+      const double ey = half_u * std::abs(u.y) + half_v * std::abs(v.y) + ra;
+      const double ez = half_u * std::abs(u.z) + half_v * std::abs(v.z) + ra;
+      return CGAL::Bbox_3(a.x - ex, a.y - ey, a.z - ez, a.x + ex, a.y + ey, a.z + ez);
+    }
     default:
       return ball(a, ra);
     }
   }
 
-  /// Number of surface patches sampled separately (cone: cap a, flank, cap b).
-  int patch_count() const { return kind == round_cone ? 3 : 1; }
+  /// Number of surface patches sampled separately (cone: cap a, flank, cap b; slab:
+  /// faces, rims, corners).
+  int patch_count() const { return kind == round_cone || kind == slab ? 3 : 1; }
 
   double patch_area(int patch) const
   {
@@ -269,6 +305,12 @@ struct Primitive
       return pi * (ra + rb) * length * cos_a * cos_a;
     case torus:
       return 4 * pi * pi * ra * rb;
+    case slab:
+      if(patch == 0) // two faces
+        return 8 * half_u * half_v;
+      if(patch == 1) // half cylinders along the four edges
+        return 4 * (half_u + half_v) * pi * ra;
+      return 4 * pi * ra * ra; // four quarter balls at the corners
     default:
       return 4 * pi * ra * ra;
     }
@@ -308,6 +350,32 @@ struct Primitive
       point = a + ra * radial + rb * normal;
       break;
     }
+    case slab: {
+      if(patch == 0) {
+        normal = rng.uniform() < 0.5 ? w : -1.0 * w;
+        point = a + rng.uniform(-half_u, half_u) * u + rng.uniform(-half_v, half_v) * v + ra * normal;
+      } else if(patch == 1) {
+        // An edge by its length, then a point on its outer half cylinder (uniform in angle).
+        const double t = rng.uniform(0, 2 * (half_u + half_v));
+        const double sign = rng.uniform() < 0.5 ? -1.0 : 1.0, theta = rng.uniform(-pi / 2, pi / 2);
+        V3 on_edge, out;
+        if(t < 2 * half_u) { // an edge along u, at v = +-half_v
+          on_edge = a + rng.uniform(-half_u, half_u) * u + (sign * half_v) * v;
+          out = sign * v;
+        } else {
+          on_edge = a + (sign * half_u) * u + rng.uniform(-half_v, half_v) * v;
+          out = sign * u;
+        }
+        normal = std::cos(theta) * out + std::sin(theta) * w;
+        point = on_edge + ra * normal;
+      } else {
+        // A uniform direction picks its corner by the signs of its u and v components.
+        normal = rng.unit_vector();
+        const double su = dot(normal, u) < 0 ? -1.0 : 1.0, sv = dot(normal, v) < 0 ? -1.0 : 1.0;
+        point = a + (su * half_u) * u + (sv * half_v) * v + ra * normal;
+      }
+      break;
+    }
     default:
       on_ball(a, ra, rng.uniform(-1, 1));
     }
@@ -320,6 +388,7 @@ struct Axis_curve
   std::vector<V3> vertices; ///< polyline vertices (empty for an arc)
   V3 centre, axis, start;   ///< arc: `start` rotated about (centre, axis) by [0, angle]
   double angle = 0;
+  double sheet_half_width = 0; ///< > 0: the mid-line of a plate this wide (see `Shape::add_slab()`)
 
   bool is_arc() const { return vertices.empty(); }
   V3 front() const { return is_arc() ? start : vertices.front(); }
@@ -358,6 +427,9 @@ struct Skeleton_polyline
   /// slight underestimate of the inscribed radius close to them.
   std::vector<double> radii;
   bool closed = false;
+  /// 0 for a tube; for the mid-line of a plate (`Shape::add_slab()`), half the plate's
+  /// width: a curve skeleton of a plate may run anywhere near that line.
+  double sheet_half_width = 0;
 };
 
 /// A vertex of the ground-truth skeleton graph: where polylines end or meet.
@@ -382,6 +454,12 @@ public:
   const std::string& name() const { return name_; }
   /// The topology the shape was designed to have (see the shape functions).
   const Topology& expected_topology() const { return expected_; }
+  void set_expected_topology(const Topology& t) { expected_ = t; }
+  void set_name(const std::string& name) { name_ = name; }
+  /// Whether the shape has a plate (`add_slab()`). The curve skeleton of a plate is a tree
+  /// of medial curves whose end points and junctions depend on its outline, so only the
+  /// components and cycles of such a shape are designed.
+  bool has_sheets() const { return has_sheets_; }
 
   /// Adds a tapered capsule: the convex hull of the balls (a, ra) and (b, rb).
   /// Its medial axis is the segment ab, with a radius varying linearly from ra to rb.
@@ -428,6 +506,24 @@ public:
       const internal::Primitive& t = primitives_.back();
       add_axis_arc(centre, axis, internal::to_point(t.a + major * t.u), 2 * internal::pi);
     }
+    return *this;
+  }
+
+  /// Adds a plate: the points within `half_thickness` of the rectangle centred at
+  /// `centre` with half extents `half_u` along `u` and `half_v` along `v`. Its skeleton
+  /// curve is given as the segment from `axis_from` to `axis_to` (usually the long
+  /// mid-line, from where the plate is attached), with a coverage tolerance of half of
+  /// the shorter half extent (see `Skeleton_polyline::sheet_half_width`).
+  Shape& add_slab(const Point_3& centre, const Vector_3& u, const Vector_3& v, double half_u, double half_v,
+                  double half_thickness, const Point_3& axis_from, const Point_3& axis_to)
+  {
+    primitives_.push_back(internal::Primitive::make_slab(internal::to_v3(centre), internal::to_v3(u),
+                                                         internal::to_v3(v), half_u, half_v, half_thickness));
+    internal::Axis_curve curve;
+    curve.vertices = {internal::to_v3(axis_from), internal::to_v3(axis_to)};
+    curve.sheet_half_width = std::min(half_u, half_v);
+    curves_.push_back(curve);
+    has_sheets_ = true;
     return *this;
   }
 
@@ -509,6 +605,7 @@ public:
         }
       }
       Skeleton_polyline polyline;
+      polyline.sheet_half_width = curve.sheet_half_width;
       polyline.closed = same_node(curve.front(), curve.back());
       if(polyline.closed)
         pts.back() = pts.front(); // exact repetition, as documented
@@ -620,6 +717,7 @@ private:
 
   std::string name_;
   Topology expected_;
+  bool has_sheets_ = false;
   std::vector<internal::Primitive> primitives_;
   std::vector<internal::Axis_curve> curves_;
 };
