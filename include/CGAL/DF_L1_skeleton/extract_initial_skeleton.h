@@ -100,7 +100,10 @@ struct Thin_parts
 // A thin part is a 26-connected component of the occupied voxels outside it that
 // touches it and reaches `reach` voxels beyond it: a bump of the surface, a web between
 // two limbs near their junction or a clump of outliers on the surface does not reach
-// that far, and a flat or linear point set, with no thick part, has no thin part either.
+// that far. A component that touches no thick part is a thin object of its own (a
+// twig, a wire or a plate apart from the rest) when it spans `2 reach` voxels or more
+// and is three voxels thick somewhere (a voxel two voxels from the unoccupied ones): a
+// layer of points one or two voxels thick (a flat scan) encloses nothing.
 template <class Traits>
 Thin_parts thin_parts(const Distance_field<Traits>& df, double margin, double reach)
 {
@@ -128,13 +131,30 @@ Thin_parts thin_parts(const Distance_field<Traits>& df, double margin, double re
     return result;
   const std::vector<float> beyond = squared_distance_to_sites<Tag>(
     df.dims, [&](std::size_t v) { return thick[v]; }, float((std::max)(reach * reach, 3.0))); // compared with both
+  result.depth = occupied_depth(df);
   bool any = false;
   for_each_26_component(df, [&](std::size_t v) { return occupied[v] && !thick[v]; },
                         [&](const std::vector<std::size_t>& component) {
     const bool far = std::any_of(component.begin(), component.end(),
                                  [&](std::size_t v) { return beyond[v] >= reach * reach; });
     const bool attached = std::any_of(component.begin(), component.end(), [&](std::size_t v) { return beyond[v] <= 3; });
-    if(far && attached)
+    bool apart = false;
+    if(!attached)
+    {
+      std::array<int, 3> lo = df.coordinates(component.front()), hi = lo;
+      for(std::size_t v : component)
+      {
+        const std::array<int, 3> c = df.coordinates(v);
+        for(int d = 0; d < 3; ++d)
+        {
+          lo[d] = (std::min)(lo[d], c[d]);
+          hi[d] = (std::max)(hi[d], c[d]);
+        }
+      }
+      apart = (std::max)({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]}) + 1 >= 2 * reach &&
+              std::any_of(component.begin(), component.end(), [&](std::size_t v) { return result.depth[v] >= 2; });
+    }
+    if(far && (attached || apart))
       for(std::size_t v : component)
         result.voxels[v] = any = 1;
   });
@@ -146,7 +166,6 @@ Thin_parts thin_parts(const Distance_field<Traits>& df, double margin, double re
     df.dims, [&](std::size_t v) { return result.voxels[v]; }, float((margin + 1) * (margin + 1)));
   for(std::size_t v = 0; v < n; ++v)
     result.solid[v] = occupied[v] && near[v] <= (margin + 1) * (margin + 1);
-  result.depth = occupied_depth(df);
   return result;
 }
 
@@ -295,12 +314,14 @@ void prune_spurs(Skeleton_graph<Traits>& g, double ratio, double voxel_size)
       if(boost::degree(current, g) < 3)
       {
         // A whole component: the skeleton of a separate part (a ball gives a point or a
-        // short curve), unless it is shallower than two voxels, a fold of the surface.
+        // short curve), unless it is shallower than two voxels and shorter than four
+        // times that, a fold of the surface (a thin object apart is longer).
         double max_radius = 0;
         for(vertex v : chain)
           max_radius = (std::max)(max_radius, CGAL::to_double(g[v].radius));
         max_radius = (std::max)(max_radius, CGAL::to_double(g[current].radius));
-        if(boost::degree(current, g) == 1 && max_radius < 2 * voxel_size)
+        length += std::sqrt(CGAL::to_double(CGAL::squared_distance(g[previous].point, g[current].point)));
+        if(boost::degree(current, g) == 1 && max_radius < 2 * voxel_size && length < 8 * voxel_size)
         {
           chain.push_back(current);
           for(vertex v : chain)
@@ -365,7 +386,10 @@ void prune_spurs(Skeleton_graph<Traits>& g, double ratio, double voxel_size)
 ///   `thin_parts`, the occupied voxels beyond the balls of radius DT + 2 voxels around
 ///   the voxels two or more voxels deep join the solid, when they form a component that
 ///   touches those balls and reaches 4 voxels beyond them (bumps, webs between limbs and
-///   clumps of outliers on the surface do not); there the thinning follows the distance
+///   clumps of outliers on the surface do not), or when it touches no ball, spans 8
+///   voxels or more and is 3 voxels thick somewhere: a thin object apart from the rest (a
+///   twig, a wire, a plate), which the curves would otherwise miss whole (a flat layer of
+///   points stays without skeleton); there the thinning follows the distance
 ///   to the nearest unoccupied voxel, and a curve may end at a voxel as deep as those
 ///   around it. The tree scan of our tests went from 8 pieces to one skeleton through
 ///   its twigs, the camel's legs now reach the ground; the 72 synthetic cases do not
@@ -413,7 +437,9 @@ void prune_spurs(Skeleton_graph<Traits>& g, double ratio, double voxel_size)
 /// what a flat, linear or noisy sheet of points encloses between its samples.
 ///
 /// \returns the skeleton voxels and the graph; both are empty when the field has no
-///          interior voxel two voxels deep (a flat or linear point set, or one too sparse to enclose a volume)
+///          interior voxel two voxels deep and no thin object (a flat or linear point set, or one too
+///          sparse to enclose a volume); the graph alone may hold curves when only thin objects have
+///          them
 template <class Traits, class NamedParameters = parameters::Default_named_parameters>
 Initial_skeleton<Traits> extract_initial_skeleton(const Distance_field<Traits>& field,
                                                   const NamedParameters& np = parameters::default_values())
@@ -453,8 +479,14 @@ Initial_skeleton<Traits> extract_initial_skeleton(const Distance_field<Traits>& 
       if(with_thin_parts)
         thin = internal::thin_parts(field, 2.0, 4.0);
     });
-  if(!has_interior)
+  const bool has_thin = with_thin_parts && std::find(thin.voxels.begin(), thin.voxels.end(), 1) != thin.voxels.end();
+  if(!has_interior && !has_thin)
     return result;
+  if(!has_interior) // thin objects alone: no ridge voxel, no thick solid
+  {
+    in.assign(field.size(), 0);
+    curves.assign(field.size(), 0);
+  }
   if(in_occupied)
     for(std::size_t v = 0; v < field.size(); ++v)
       curves[v] = curves[v] || values[v] > 0;

@@ -553,6 +553,26 @@ void parse_xyz(std::string_view buf, const std::string& name, Cloud& out)
 // OFF
 // ---------------------------------------------------------------------------
 
+/// Appends the point of an OFF vertex line (its first three tokens) and, with
+/// `with_normal`, the normal of the next three; a bad number is an error at `where()`,
+/// a non-finite normal clears `normals_finite`.
+template <class Cloud, class Where>
+void append_off_vertex(Cloud& out, const std::string_view* tok, bool with_normal, bool& normals_finite,
+                       const std::string& name, const Where& where)
+{
+  append(out.points, parse_coordinates(tok, name, where));
+  if(!with_normal)
+    return;
+  std::array<double, 3> nv;
+  bool finite;
+  std::size_t bad = 0;
+  const Number_status st = parse_normal(tok + 3, nv, finite, bad);
+  if(st != Number_status::ok)
+    fail(name, where(), number_error(tok[3 + bad], st));
+  normals_finite = normals_finite && finite;
+  append(out.normals, nv);
+}
+
 /// Next line holding something other than blanks and '#' comments.
 inline bool next_content_line(Line_reader& lines, std::string_view& content)
 {
@@ -625,17 +645,7 @@ void parse_headerless_off(std::string_view buf, Line_reader& lines, std::string_
                ", the first line of this headerless OFF file, got " +
                (t.size == 7 ? std::string("7 or more") : std::to_string(t.size)));
     }
-    append(out.points, parse_coordinates(t.tok.data(), name, where));
-    if(columns == 6) {
-      std::array<double, 3> nv;
-      bool finite;
-      std::size_t bad = 0;
-      const Number_status st = parse_normal(t.tok.data() + 3, nv, finite, bad);
-      if(st != Number_status::ok)
-        fail(name, where(), number_error(t.tok[3 + bad], st));
-      normals_finite = normals_finite && finite;
-      append(out.normals, nv);
-    }
+    append_off_vertex(out, t.tok.data(), columns == 6, normals_finite, name, where);
   } while(next_content_line(lines, line));
   if(!normals_finite)
     out.normals.clear();
@@ -776,17 +786,7 @@ void parse_off(std::string_view buf, const std::string& name, Cloud& out)
                ", the first vertex line (the keyword " + quote_token(keyword) +
                " announces normals but that line has none), got " +
                (t.size == 6 ? std::string("6 or more") : std::to_string(t.size)));
-    append(out.points, parse_coordinates(t.tok.data(), name, where));
-    if(read_normals) {
-      std::array<double, 3> nv;
-      bool finite;
-      std::size_t bad = 0;
-      const Number_status st = parse_normal(t.tok.data() + 3, nv, finite, bad);
-      if(st != Number_status::ok)
-        fail(name, where(), number_error(t.tok[3 + bad], st));
-      normals_finite = normals_finite && finite;
-      append(out.normals, nv);
-    }
+    append_off_vertex(out, t.tok.data(), read_normals, normals_finite, name, where);
   }
   // Faces and anything after them are not read.
   if(!normals_finite)
