@@ -21,6 +21,8 @@
 #include <CGAL/squared_distance_3.h>
 
 #include <algorithm>
+#include <limits>
+#include <numeric>
 #include <array>
 #include <cmath>
 #include <utility>
@@ -285,16 +287,101 @@ bool is_deep_end(const Distance_field<Traits>& df, const std::vector<float>& dep
   return depth[v] >= ratio * maxima.over({{c[0] - r, c[1] - r, c[2] - r}}, {{c[0] + r, c[1] + r, c[2] + r}});
 }
 
-// Removes, repeatedly, the terminal branches shorter than `ratio` times the local
-// radius at their junction: the hair that thinning grows on bumps of the surface.
+// The balls of a skeleton graph (vertex, local radius), to ask whether those of a chain
+// of vertices reach beyond the union of the others.
+class Ball_cover
+{
+public:
+  template <class Traits>
+  explicit Ball_cover(const Skeleton_graph<Traits>& g)
+  {
+    const std::size_t n = boost::num_vertices(g);
+    xyz_.resize(n);
+    radius_.resize(n);
+    for(std::size_t v = 0; v < n; ++v)
+    {
+      xyz_[v] = {{CGAL::to_double(g[v].point.x()), CGAL::to_double(g[v].point.y()), CGAL::to_double(g[v].point.z())}};
+      radius_[v] = CGAL::to_double(g[v].radius);
+      max_radius_ = (std::max)(max_radius_, radius_[v]);
+    }
+    by_x_.resize(n);
+    std::iota(by_x_.begin(), by_x_.end(), std::size_t(0));
+    std::sort(by_x_.begin(), by_x_.end(), [&](std::size_t a, std::size_t b) {
+      return xyz_[a][0] != xyz_[b][0] ? xyz_[a][0] < xyz_[b][0] : a < b;
+    });
+  }
+
+  // Whether some vertex v of `chain` sticks out of the union of the balls of the
+  // vertices u with `excluded[u] == 0` by at least enough + per_radius r(v): whether
+  // one of 26 points on the sphere of v (and v itself) lies that far outside every ball.
+  bool sticks_out(const std::vector<std::size_t>& chain, const std::vector<char>& excluded, double enough,
+                  double per_radius) const
+  {
+    static const std::array<std::array<double, 3>, 27> directions = [] {
+      std::array<std::array<double, 3>, 27> d;
+      for(int cell = 0; cell < 27; ++cell)
+      {
+        const double x = cell % 3 - 1, y = cell / 3 % 3 - 1, z = cell / 9 - 1, l = std::sqrt(x * x + y * y + z * z);
+        d[cell] = l > 0 ? std::array<double, 3>{{x / l, y / l, z / l}} : std::array<double, 3>{{0, 0, 0}};
+      }
+      return d;
+    }();
+    for(std::size_t v : chain)
+    {
+      const double need = enough + per_radius * radius_[v];
+      for(const std::array<double, 3>& d : directions)
+      {
+        const std::array<double, 3> p{{xyz_[v][0] + radius_[v] * d[0], xyz_[v][1] + radius_[v] * d[1],
+                                       xyz_[v][2] + radius_[v] * d[2]}};
+        if(!covered(p, need, excluded))
+          return true;
+      }
+    }
+    return false;
+  }
+
+private:
+  // Whether p lies within `slack` of a ball of a vertex u with `excluded[u] == 0`.
+  bool covered(const std::array<double, 3>& p, double slack, const std::vector<char>& excluded) const
+  {
+    const double reach = max_radius_ + slack;
+    auto first = std::lower_bound(by_x_.begin(), by_x_.end(), p[0] - reach,
+                                  [&](std::size_t u, double x) { return xyz_[u][0] < x; });
+    for(auto it = first; it != by_x_.end() && xyz_[*it][0] <= p[0] + reach; ++it)
+    {
+      const std::size_t u = *it;
+      if(excluded[u])
+        continue;
+      const double dx = xyz_[u][0] - p[0], dy = xyz_[u][1] - p[1], dz = xyz_[u][2] - p[2];
+      const double r = radius_[u] + slack;
+      if(dx * dx + dy * dy + dz * dz < r * r)
+        return true;
+    }
+    return false;
+  }
+
+  std::vector<std::array<double, 3>> xyz_;
+  std::vector<double> radius_;
+  std::vector<std::size_t> by_x_;
+  double max_radius_ = 0;
+};
+
+// Removes, repeatedly, the terminal branches that add nothing to the shape: those
+// shorter than `ratio` times the local radius at their junction plus a voxel, and those
+// ending two voxels deep or more whose balls the balls of the rest of the skeleton cover
+// to within 2.5 voxels plus half their radius (the hair that thinning grows on bumps of
+// the surface and in the crotches of junctions). A limb, however short or tapered,
+// sticks out of the body it leaves.
 template <class Traits>
 void prune_spurs(Skeleton_graph<Traits>& g, double ratio, double voxel_size)
 {
   typedef typename boost::graph_traits<Skeleton_graph<Traits>>::vertex_descriptor vertex;
+  const double cover_slack = 2.5 * voxel_size, cover_per_radius = 0.5;
   for(bool changed = true; changed;)
   {
     changed = false;
     std::vector<char> doomed(boost::num_vertices(g), 0);
+    std::vector<std::vector<std::size_t>> candidates; // terminal chains, not doomed by length
     for(vertex end = 0; end < boost::num_vertices(g); ++end)
     {
       if(boost::degree(end, g) != 1)
@@ -333,6 +420,60 @@ void prune_spurs(Skeleton_graph<Traits>& g, double ratio, double voxel_size)
       if(length < ratio * CGAL::to_double(g[current].radius) + voxel_size)
         for(vertex v : chain)
           doomed[v] = 1;
+      else if(CGAL::to_double(g[end].radius) >= 2 * voxel_size)
+        candidates.emplace_back(chain.begin(), chain.end()); // ends in a thin part are left alone
+    }
+    if(!candidates.empty())
+    {
+      // Covered against everything else first; a chain covered only by other covered
+      // chains (two hairs side by side) is kept unless it is covered without them.
+      const Ball_cover cover(g);
+      std::vector<char> excluded(boost::num_vertices(g), 0);
+      std::vector<std::size_t> covered;
+      for(std::size_t c = 0; c < candidates.size(); ++c)
+      {
+        for(std::size_t v : candidates[c])
+          excluded[v] = 1;
+        if(!cover.sticks_out(candidates[c], excluded, cover_slack, cover_per_radius))
+          covered.push_back(c);
+        for(std::size_t v : candidates[c])
+          excluded[v] = 0;
+      }
+      for(std::size_t c : covered)
+        for(std::size_t v : candidates[c])
+          excluded[v] = 1;
+      bool any = false;
+      for(std::size_t c : covered)
+        if(!cover.sticks_out(candidates[c], excluded, cover_slack, cover_per_radius))
+        {
+          for(std::size_t v : candidates[c])
+            doomed[v] = 1;
+          any = true;
+        }
+      if(!any && !covered.empty())
+      {
+        // Chains that only cover each other (a hair beside a branch tip, two hairs side
+        // by side): the shortest goes, one per round.
+        const auto length = [&](const std::vector<std::size_t>& chain) {
+          double l = 0;
+          for(std::size_t i = 1; i < chain.size(); ++i)
+            l += std::sqrt(CGAL::to_double(CGAL::squared_distance(g[chain[i - 1]].point, g[chain[i]].point)));
+          return l;
+        };
+        std::size_t shortest = covered.front();
+        double shortest_length = length(candidates[shortest]);
+        for(std::size_t c : covered)
+        {
+          const double l = length(candidates[c]);
+          if(l < shortest_length)
+          {
+            shortest = c;
+            shortest_length = l;
+          }
+        }
+        for(std::size_t v : candidates[shortest])
+          doomed[v] = 1;
+      }
     }
     // Remove the doomed vertices, from the last so that indices stay valid (vecS).
     for(vertex v = 0; v < boost::num_vertices(g); ++v)
@@ -373,10 +514,10 @@ void prune_spurs(Skeleton_graph<Traits>& g, double ratio, double voxel_size)
 /// - it is thinned to curves without changing its topology (simple voxels only), in
 ///   the order of increasing distance, so the curves follow the ridge of the field; a
 ///   torus keeps its loop, a solid becomes a tree. A curve end is kept only at a voxel
-///   of S whose distance is at least 3/4 of the largest distance within about twice its
-///   own:
-///   the end of a branch sits near the centre of the ball that caps it, while noise
-///   raises ridge voxels on the slope of a deeper field;
+///   of S whose distance is at least half the largest distance within about twice its
+///   own: the end of a branch sits near the centre of the ball that caps it, while noise
+///   raises ridge voxels on the slope of a deeper field, where the distance grows by a
+///   voxel per voxel (a ratio of 1/3). A cone tapering by up to 1 in 2 passes;
 /// - the 26-adjacency graph of the curve voxels, without redundant diagonals and
 ///   without the small cycles that voxel clusters make at junctions (the graph keeps as
 ///   many cycles as the curve voxels have loops, computed from their Euler
@@ -390,13 +531,23 @@ void prune_spurs(Skeleton_graph<Traits>& g, double ratio, double voxel_size)
 ///   voxels or more and is 3 voxels thick somewhere: a thin object apart from the rest (a
 ///   twig, a wire, a plate), which the curves would otherwise miss whole (a flat layer of
 ///   points stays without skeleton); there the thinning follows the distance
-///   to the nearest unoccupied voxel, and a curve may end at a voxel as deep as those
-///   around it. The tree scan of our tests went from 8 pieces to one skeleton through
-///   its twigs, the camel's legs now reach the ground; the 72 synthetic cases do not
-///   change (their thinnest tubes are 3 voxels in radius or more);
-/// - terminal branches shorter than `spur_length_ratio` times the local radius at
-///   their junction (plus one voxel) are pruned; in a thin part, the local radius is the
-///   distance to the nearest unoccupied voxel less half a voxel;
+///   to the nearest unoccupied voxel, and a curve may end at a voxel 3/4 as deep as the
+///   deepest within twice its depth, near the tip rather than on the ragged sides. The
+///   tree scan of our tests went from 8 pieces to one skeleton through its twigs, the
+///   camel's legs now reach the ground; the 72 synthetic cases do not change (their
+///   thinnest tubes are 3 voxels in radius or more);
+/// - terminal branches are pruned, repeatedly, when they are shorter than
+///   `spur_length_ratio` times the local radius at their junction (plus one voxel), or
+///   when it ends at a voxel two or more voxels deep and the ball (vertex, local radius)
+///   of every vertex v of the branch lies within the union of the balls of the other
+///   vertices, to 2.5 voxels + r(v) / 2 (probed at its centre and 26 points of its
+///   sphere): the branch adds nothing to the shape that the balls describe. That is the
+///   hair that ridge voxels grow on bumps of a noisy surface and in the crotches of
+///   junctions, while a limb sticks out of the body it leaves however short or tapered it
+///   is. The ends in thin parts are left to the length test: at a scanned hoof or a twig
+///   tip the balls are a voxel or two wide and the slack would swallow the tip. In a
+///   thin part, the local radius is the distance to the nearest unoccupied voxel less
+///   half a voxel;
 /// - with `occupied_depth` (our addition, for smoothed noisy clouds), the depth that the
 ///   ridge test, the thinning, the end test and the radii read is not the distance field
 ///   but the distance to the nearest unoccupied voxel less one, and the solid also takes
@@ -451,7 +602,7 @@ Initial_skeleton<Traits> extract_initial_skeleton(const Distance_field<Traits>& 
   const bool with_thin_parts =
     !in_occupied && parameters::choose_parameter(parameters::get_parameter(np, internal_np::df_l1_thin_parts), true);
 
-  const double end_depth_ratio = 0.75;
+  const double ridge_end_ratio = 0.5, thin_end_ratio = 0.75;
   Initial_skeleton<Traits> result;
   // The depth that the ridge test and the thinning read: the distance field, or the
   // depth in the occupied voxels less their outer layer (about the field where the
@@ -490,11 +641,10 @@ Initial_skeleton<Traits> extract_initial_skeleton(const Distance_field<Traits>& 
   if(in_occupied)
     for(std::size_t v = 0; v < field.size(); ++v)
       curves[v] = curves[v] || values[v] > 0;
-  // The thinning order and the end test use the depth above (the distance field, or the
-  // depth in the occupied voxels with `occupied_depth`), and in and around the
-  // thin parts (where it is 0 or 1) the distance to the nearest unoccupied voxel minus
-  // one (about the field plus the boundary layer elsewhere): their curves then follow
-  // their middle, and end only at a voxel as deep as the others around it.
+  // The thinning order uses the depth above (the distance field, or the depth in the
+  // occupied voxels with `occupied_depth`), and in and around the thin parts (where it
+  // is 0 or 1) the distance to the nearest unoccupied voxel minus one (about the field
+  // plus the boundary layer elsewhere): their curves then follow their middle.
   std::vector<float> depth = values;
   if(with_thin_parts)
   {
@@ -505,13 +655,16 @@ Initial_skeleton<Traits> extract_initial_skeleton(const Distance_field<Traits>& 
         depth[v] = (std::max)(depth[v], thin.depth[v] - 1);
       }
   }
+  // A ridge voxel may end a curve when it is half as deep as the deepest voxel within
+  // twice its depth, a voxel of a thin part when 3/4 as deep: the ends in thin parts
+  // (the legs of a scan, twigs) then sit at their tips, not on the ragged sides.
   std::vector<signed char> deep_end(field.size(), -1); // memo of is_deep_end
   const internal::Block_maximum maxima(field, depth);
   internal::thin_to_curves(field, depth, curves, [&](std::size_t v) {
     if(!in[v] && !(with_thin_parts && thin.voxels[v]))
       return false;
     if(deep_end[v] < 0)
-      deep_end[v] = internal::is_deep_end(field, depth, maxima, v, end_depth_ratio);
+      deep_end[v] = internal::is_deep_end(field, depth, maxima, v, in[v] ? ridge_end_ratio : thin_end_ratio);
     return bool(deep_end[v]);
   });
   std::vector<std::size_t> curve_voxels;
