@@ -381,7 +381,9 @@ void prune_spurs(Skeleton_graph<Traits>& g, double ratio, double voxel_size)
   {
     changed = false;
     std::vector<char> doomed(boost::num_vertices(g), 0);
-    std::vector<std::vector<std::size_t>> candidates; // terminal chains, not doomed by length
+    // terminal chains not doomed by length, and their length up to the junction's edge
+    std::vector<std::vector<std::size_t>> candidates;
+    std::vector<double> candidate_lengths;
     for(vertex end = 0; end < boost::num_vertices(g); ++end)
     {
       if(boost::degree(end, g) != 1)
@@ -416,12 +418,16 @@ void prune_spurs(Skeleton_graph<Traits>& g, double ratio, double voxel_size)
         }
         continue;
       }
+      const double chain_length = length;
       length += std::sqrt(CGAL::to_double(CGAL::squared_distance(g[previous].point, g[current].point)));
       if(length < ratio * CGAL::to_double(g[current].radius) + voxel_size)
         for(vertex v : chain)
           doomed[v] = 1;
-      else if(CGAL::to_double(g[end].radius) >= 2 * voxel_size)
-        candidates.emplace_back(chain.begin(), chain.end()); // ends in a thin part are left alone
+      else if(CGAL::to_double(g[end].radius) >= 2 * voxel_size) // ends in a thin part are left alone
+      {
+        candidates.emplace_back(chain.begin(), chain.end());
+        candidate_lengths.push_back(chain_length);
+      }
     }
     if(!candidates.empty())
     {
@@ -454,23 +460,9 @@ void prune_spurs(Skeleton_graph<Traits>& g, double ratio, double voxel_size)
       {
         // Chains that only cover each other (a hair beside a branch tip, two hairs side
         // by side): the shortest goes, one per round.
-        const auto length = [&](const std::vector<std::size_t>& chain) {
-          double l = 0;
-          for(std::size_t i = 1; i < chain.size(); ++i)
-            l += std::sqrt(CGAL::to_double(CGAL::squared_distance(g[chain[i - 1]].point, g[chain[i]].point)));
-          return l;
-        };
-        std::size_t shortest = covered.front();
-        double shortest_length = length(candidates[shortest]);
-        for(std::size_t c : covered)
-        {
-          const double l = length(candidates[c]);
-          if(l < shortest_length)
-          {
-            shortest = c;
-            shortest_length = l;
-          }
-        }
+        const std::size_t shortest = *std::min_element(covered.begin(), covered.end(), [&](std::size_t a, std::size_t b) {
+          return candidate_lengths[a] < candidate_lengths[b];
+        });
         for(std::size_t v : candidates[shortest])
           doomed[v] = 1;
       }
