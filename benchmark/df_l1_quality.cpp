@@ -20,7 +20,6 @@
 #include <atomic>
 #include <chrono>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <mutex>
 #include <sstream>
@@ -160,11 +159,12 @@ Row run_scan(const Options& o, const DF_L1_quality::Scan_expectation& e)
       near += grid.distance_within(v3(cloud.points[i]), reach) <= reach;
     }
     row.coverage = kept ? double(near) / double(kept) : 0;
-    const DF::Skeleton_statistics si = DF::skeleton_statistics(s.initial_skeleton().graph);
-    row.initial = "components " + std::to_string(si.components) + ", cycles " + std::to_string(si.cycles) + ", ends " +
-                  std::to_string(si.end_points);
-    row.got = "components " + std::to_string(st.components) + ", cycles " + std::to_string(st.cycles) + ", ends " +
-              std::to_string(st.end_points);
+    const auto describe = [](const DF::Skeleton_statistics& t) {
+      return "components " + std::to_string(t.components) + ", cycles " + std::to_string(t.cycles) + ", ends " +
+             std::to_string(t.end_points);
+    };
+    row.initial = describe(DF::skeleton_statistics(s.initial_skeleton().graph));
+    row.got = describe(st);
     row.ok = int(st.components) == e.components && int(st.cycles) == e.cycles;
     if(e.endpoints >= 0)
       row.ok = row.ok && std::abs(int(st.end_points) - e.endpoints) <= e.endpoint_tolerance;
@@ -334,12 +334,8 @@ int main(int argc, char* argv[])
   ctx.scan_sheet = o.scan_sheet;
   ctx.failure_sheet = o.failure_sheet;
   const std::string md = DF_L1_quality::markdown_report(rows, previous, ctx);
-  if(!o.markdown.empty()) {
-    std::ofstream out(o.markdown + ".tmp");
-    out << md;
-    out.close();
-    std::filesystem::rename(o.markdown + ".tmp", o.markdown);
-  }
+  if(!o.markdown.empty())
+    CGAL::DF_L1::internal::write_file_atomically(o.markdown, [&](std::ostream& out) { out << md; });
   auto corpus = [](const Row& r) { return r.kind == "corpus"; };
   const DF_L1_quality::Summary all = DF_L1_quality::summarize(rows, corpus);
   std::size_t scans_ok = 0;

@@ -8,6 +8,8 @@
 /// expectations of the real scans, and the Markdown report that sets a run beside the
 /// previous one.
 
+#include <CGAL/DF_L1_skeleton/internal/atomic_file.h>
+
 #include <algorithm>
 #include <cctype>
 #include <cmath>
@@ -51,11 +53,7 @@ inline std::string clean_field(std::string s)
 
 inline void write_rows(const std::string& path, const std::vector<Row>& rows)
 {
-  const std::string tmp = path + ".tmp";
-  {
-    std::ofstream out(tmp);
-    if(!out)
-      throw std::runtime_error("cannot write '" + tmp + "'");
+  CGAL::DF_L1::internal::write_file_atomically(path, [&](std::ostream& out) {
     out << "kind\tname\tfamily\tdegradation\texpected\tgot\tok\tratio\toutside\tcoverage\tseconds\tpoints\terror\tinitial\n";
     char num[160];
     for(const Row& r : rows) {
@@ -64,11 +62,7 @@ inline void write_rows(const std::string& path, const std::vector<Row>& rows)
           << clean_field(r.degradation) << '\t' << clean_field(r.expected) << '\t' << clean_field(r.got) << '\t'
           << (r.ok ? 1 : 0) << '\t' << num << '\t' << clean_field(r.error) << '\t' << clean_field(r.initial) << '\n';
     }
-    if(!out)
-      throw std::runtime_error("cannot write '" + tmp + "'");
-  }
-  if(std::rename(tmp.c_str(), path.c_str()) != 0)
-    throw std::runtime_error("cannot rename '" + tmp + "' to '" + path + "'");
+  });
 }
 
 /// The rows of a file written by `write_rows()`; none when it does not exist.
