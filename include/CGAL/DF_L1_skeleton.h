@@ -15,6 +15,7 @@
 #include <CGAL/DF_L1_skeleton/distance_field.h>
 #include <CGAL/DF_L1_skeleton/errors.h>
 #include <CGAL/DF_L1_skeleton/extract_initial_skeleton.h>
+#include <CGAL/DF_L1_skeleton/internal/point_gap_cuts.h>
 #include <CGAL/DF_L1_skeleton/flag_sparse_outliers.h>
 #include <CGAL/DF_L1_skeleton/internal/point_range.h>
 #include <CGAL/DF_L1_skeleton/named_parameters.h>
@@ -234,8 +235,10 @@ public:
     field_ = std::make_unique<Distance_field>(DF_L1::compute_distance_field<ConcurrencyTag>(*grid_));
   }
 
-  /// Extracts the initial skeleton (`extract_initial_skeleton()`) and assigns every
-  /// non-outlier input point to its nearest vertex of the graph.
+  /// Extracts the initial skeleton (`extract_initial_skeleton()`), cuts its cycles where
+  /// they cross a gap between two parts that the points show and the voxels did not
+  /// (parts 1 or 2 voxels apart), and assigns every non-outlier input point to its
+  /// nearest vertex of the graph.
   void extract_initial_skeleton()
   {
     if(initial_)
@@ -244,6 +247,22 @@ public:
     initial_ = std::make_unique<Initial_skeleton>(DF_L1::extract_initial_skeleton(
       *field_, parameters::thinning_coefficient(thinning_coefficient_,
                parameters::spur_length_ratio(spur_length_ratio_, parameters::thin_parts(!denoised_, parameters::occupied_depth(denoised_))))));
+    // The cycles through gaps between parts that the voxels could not separate are cut
+    // where the points show the gap (`internal::cut_point_gaps()`); the stubs that are
+    // left go through the spur pruning again.
+    const std::vector<char> cyclic = DF_L1::internal::on_cycle_vertices(initial_->graph);
+    if(std::find(cyclic.begin(), cyclic.end(), 1) != cyclic.end())
+    {
+      std::vector<std::array<double, 3>> xyz;
+      xyz.reserve(kept_points_.size());
+      for(const Point& p : kept_points_)
+        xyz.push_back({{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())}});
+      const double voxel = CGAL::to_double(field_->voxel_size);
+      const double spacing = DF_L1::internal::median_kth_neighbour_distance(xyz, 6, voxel / 2);
+      const DF_L1::internal::Uniform_grid grid(xyz, 2 * voxel);
+      if(DF_L1::internal::cut_point_gaps(initial_->graph, xyz, grid, voxel, spacing) > 0)
+        DF_L1::internal::prune_spurs(initial_->graph, spur_length_ratio_, voxel);
+    }
     DF_L1::assign_points_to_skeleton<ConcurrencyTag>(points_, outliers_, initial_->graph);
   }
 

@@ -1,0 +1,190 @@
+// Copyright (c) 2026 DF_L1_skeleton contributors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+#ifndef CGAL_DF_L1_SKELETON_INTERNAL_POINT_GAP_CUTS_H
+#define CGAL_DF_L1_SKELETON_INTERNAL_POINT_GAP_CUTS_H
+
+#include <CGAL/DF_L1_skeleton/Skeleton_graph.h>
+#include <CGAL/DF_L1_skeleton/internal/uniform_grid.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace DF_L1 {
+namespace internal {
+
+// Whether each vertex of `g` has an edge on a cycle (an edge that is not a bridge of the
+// graph), by an iterative depth-first search (low-link).
+template <class Graph>
+std::vector<char> on_cycle_vertices(const Graph& g)
+{
+  const std::size_t n = boost::num_vertices(g);
+  std::vector<std::vector<std::pair<std::size_t, std::size_t>>> adjacency(n);
+  std::size_t m = 0;
+  for(auto e = boost::edges(g).first; e != boost::edges(g).second; ++e, ++m)
+  {
+    const std::size_t a = boost::source(*e, g), b = boost::target(*e, g);
+    adjacency[a].emplace_back(b, m);
+    adjacency[b].emplace_back(a, m);
+  }
+  std::vector<std::size_t> entry(n, std::size_t(-1)), low(n, 0), parent_edge(n, std::size_t(-1)), next(n, 0);
+  std::vector<std::pair<std::size_t, std::size_t>> ends(m);
+  std::vector<char> bridge(m, 0);
+  std::size_t time = 0;
+  for(std::size_t root = 0; root < n; ++root)
+  {
+    if(entry[root] != std::size_t(-1))
+      continue;
+    std::vector<std::size_t> stack(1, root);
+    entry[root] = low[root] = time++;
+    while(!stack.empty())
+    {
+      const std::size_t v = stack.back();
+      if(next[v] < adjacency[v].size())
+      {
+        const auto [w, id] = adjacency[v][next[v]++];
+        if(id == parent_edge[v])
+          continue;
+        if(entry[w] != std::size_t(-1))
+          low[v] = (std::min)(low[v], entry[w]);
+        else
+        {
+          parent_edge[w] = id;
+          entry[w] = low[w] = time++;
+          stack.push_back(w);
+        }
+      }
+      else
+      {
+        stack.pop_back();
+        if(!stack.empty())
+        {
+          const std::size_t u = stack.back();
+          low[u] = (std::min)(low[u], low[v]);
+          if(low[v] > entry[u])
+            bridge[parent_edge[v]] = 1;
+        }
+      }
+    }
+  }
+  std::vector<char> result(n, 0);
+  m = 0;
+  for(auto e = boost::edges(g).first; e != boost::edges(g).second; ++e, ++m)
+    if(!bridge[m])
+      result[boost::source(*e, g)] = result[boost::target(*e, g)] = 1;
+  return result;
+}
+
+// Cuts the cycles of a curve graph where they cross a gap between two surfaces that the
+// voxels could not separate (parts 1 or 2 voxels apart: their boundary voxels touch, and
+// the pocket between them is taken for interior). Such a curve runs from one surface
+// straight into the other: the input points near its line, projected on it, leave an
+// empty interval at the vertex, wider than the sampling spacing. Inside a part, however
+// thin, the surface surrounds the curve and its projection has no such interval. A
+// candidate is a vertex of degree 2 on a cycle whose local radius is at most 2.5 voxels
+// (the pocket is thin); the widest gaps are cut first, each only while its vertex is
+// still on a cycle, so a cut never splits a component. `spacing` is the sampling spacing
+// (the median distance to the 6th nearest neighbour). Returns the number of cuts.
+template <class Traits>
+std::size_t cut_point_gaps(Skeleton_graph<Traits>& g, const std::vector<std::array<double, 3>>& xyz, const Uniform_grid& grid,
+                           double voxel, double spacing)
+{
+  typedef std::array<double, 3> A;
+  const double reach_along = 2.5 * voxel, centre_window = 1.5 * voxel, max_radius = 2.5 * voxel;
+  const double min_width = (std::max)(0.6 * voxel, spacing);
+  std::vector<std::pair<double, std::size_t>> nearest;
+  auto local_spacing = [&](std::size_t i) { // distance to the 6th nearest neighbour
+    grid.k_nearest(xyz[i], 7, [](std::size_t) { return true; }, nearest);
+    return nearest.empty() ? 0.0 : std::sqrt(nearest.back().first);
+  };
+  auto pos = [&](std::size_t v) {
+    return A{{CGAL::to_double(g[v].point.x()), CGAL::to_double(g[v].point.y()), CGAL::to_double(g[v].point.z())}};
+  };
+  // the vertex `hops` steps from v through its neighbour w, along vertices of degree 2
+  auto walk = [&](std::size_t v, std::size_t w, int hops) {
+    std::size_t previous = v, current = w;
+    for(int h = 1; h < hops && boost::degree(current, g) == 2; ++h)
+    {
+      auto it = boost::adjacent_vertices(current, g).first;
+      const std::size_t n = *it == previous ? *(++it) : *it;
+      previous = current;
+      current = n;
+    }
+    return current;
+  };
+  std::vector<std::pair<double, std::size_t>> candidates; // (minus the empty width, vertex)
+  {
+    const std::vector<char> cyclic = on_cycle_vertices(g);
+    std::vector<std::pair<double, std::size_t>> along; // (abscissa along the curve, point)
+    for(std::size_t v = 0; v < boost::num_vertices(g); ++v)
+    {
+      if(!cyclic[v] || boost::degree(v, g) != 2 ||
+         CGAL::to_double(g[v].radius) > max_radius)
+        continue;
+      auto it = boost::adjacent_vertices(v, g).first;
+      const std::size_t a = *it, b = *(++it);
+      const A p = pos(v), pa = pos(walk(v, a, 2)), pb = pos(walk(v, b, 2));
+      A t{{pb[0] - pa[0], pb[1] - pa[1], pb[2] - pa[2]}};
+      const double tl = std::sqrt(t[0] * t[0] + t[1] * t[1] + t[2] * t[2]);
+      if(!(tl > 0))
+        continue;
+      for(double& c : t)
+        c /= tl;
+      const double disk = CGAL::to_double(g[v].radius) + voxel; // the surface around the curve
+      along.clear();
+      grid.for_each_in_ball(p, std::sqrt(reach_along * reach_along + disk * disk), [&](std::size_t i, double d2) {
+        const A d{{xyz[i][0] - p[0], xyz[i][1] - p[1], xyz[i][2] - p[2]}};
+        const double s = d[0] * t[0] + d[1] * t[1] + d[2] * t[2];
+        if(std::abs(s) <= reach_along && d2 - s * s <= disk * disk)
+          along.emplace_back(s, i);
+        return true;
+      });
+      std::sort(along.begin(), along.end());
+      // the widest interval with a surface (6 points or more) on either side: an outlier
+      // inside a part lowers its local radius, and the few points near the curve's
+      // line are then that outlier and its like
+      double widest = 0;
+      std::size_t below = 0, above = 0;
+      for(std::size_t k = 5; k + 6 < along.size(); ++k)
+        if(along[k].first < centre_window && along[k + 1].first > -centre_window &&
+           along[k + 1].first - along[k].first > widest)
+        {
+          widest = along[k + 1].first - along[k].first;
+          below = along[k].second;
+          above = along[k + 1].second;
+        }
+      // wider than the sampling spacing at both of its ends: a sparse region of an uneven
+      // scan, or an isolated outlier, leaves wide intervals that are not gaps
+      if(widest >= min_width)
+        widest = (std::min)(widest - local_spacing(below), widest - local_spacing(above)) >= 0 ? widest : 0;
+      if(widest >= min_width)
+        candidates.emplace_back(-widest, v);
+    }
+  }
+  std::sort(candidates.begin(), candidates.end());
+  std::vector<char> cut(boost::num_vertices(g), 0);
+  std::size_t cuts = 0;
+  for(const auto& c : candidates)
+  {
+    const std::vector<char> cyclic = on_cycle_vertices(g);
+    if(!cyclic[c.second] || boost::degree(c.second, g) != 2)
+      continue;
+    boost::clear_vertex(c.second, g);
+    cut[c.second] = 1;
+    ++cuts;
+  }
+  for(std::size_t v = boost::num_vertices(g); v-- > 0;)
+    if(cut[v])
+      boost::remove_vertex(v, g);
+  return cuts;
+}
+
+} // namespace internal
+} // namespace DF_L1
+} // namespace CGAL
+
+#endif // CGAL_DF_L1_SKELETON_INTERNAL_POINT_GAP_CUTS_H
