@@ -230,13 +230,9 @@ int main(int argc, char* argv[])
   }
   std::vector<DF_L1_test::Degradation> degradations;
   for(const auto& name : o.degradations) {
-    bool found = false;
-    for(const auto& d : DF_L1_test::corpus_degradations())
-      if(d.name == name) {
-        degradations.push_back(d);
-        found = true;
-      }
-    if(!found) {
+    try {
+      degradations.push_back(DF_L1_test::corpus_degradation(name));
+    } catch(const std::invalid_argument&) {
       std::cerr << "df_l1_quality: unknown degradation " << name << "\n";
       return 2;
     }

@@ -250,16 +250,13 @@ public:
     // The cycles through gaps between parts that the voxels could not separate are cut
     // where the points show the gap (`internal::cut_point_gaps()`); the stubs that are
     // left go through the spur pruning again.
-    const std::vector<char> cyclic = DF_L1::internal::on_cycle_vertices(initial_->graph);
-    if(std::find(cyclic.begin(), cyclic.end(), 1) != cyclic.end())
+    if(DF_L1::skeleton_statistics(initial_->graph).cycles > 0)
     {
-      std::vector<std::array<double, 3>> xyz;
-      xyz.reserve(kept_points_.size());
-      for(const Point& p : kept_points_)
-        xyz.push_back({{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())}});
+      const std::vector<std::array<double, 3>> xyz =
+        DF_L1::internal::to_xyz(kept_points_, CGAL::Identity_property_map<Point>());
       const double voxel = CGAL::to_double(field_->voxel_size);
-      const double spacing = DF_L1::internal::median_kth_neighbour_distance(xyz, 6, voxel / 2);
       const DF_L1::internal::Uniform_grid grid(xyz, 2 * voxel);
+      const double spacing = DF_L1::internal::median_kth_neighbour_distance(xyz, 6, voxel / 2, grid);
       if(DF_L1::internal::cut_point_gaps(initial_->graph, xyz, grid, voxel, spacing) > 0)
         DF_L1::internal::prune_spurs(initial_->graph, spur_length_ratio_, voxel);
     }

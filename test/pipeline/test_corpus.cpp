@@ -188,10 +188,7 @@ TEST_CASE("corpus: a ring whose ends come 1 to 2 voxels close is cut open, close
   // interior and the initial skeleton closes the ring. The points show the gap.
   auto run = [](const std::string& family, int index, const std::string& degradation) {
     const Shape shape = corpus_shape(family, index);
-    Degradation d;
-    for(const Degradation& x : corpus_degradations())
-      if(x.name == degradation)
-        d = x;
+    const Degradation d = corpus_degradation(degradation);
     const Sample sample = make_sample(shape, d.variant, 20000, 1000 + std::uint64_t(index), d.options);
     CGAL::DF_L1_skeletonization<K> s(sample.points);
     Quality_options qo;

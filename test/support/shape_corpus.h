@@ -991,6 +991,15 @@ inline std::vector<Degradation> corpus_degradations()
   return d;
 }
 
+/// The degradation of that name; throws `std::invalid_argument` for an unknown name.
+inline Degradation corpus_degradation(const std::string& name)
+{
+  for(const Degradation& d : corpus_degradations())
+    if(d.name == name)
+      return d;
+  throw std::invalid_argument("unknown corpus degradation '" + name + "'");
+}
+
 /// Whether a skeleton's topology is the designed one: components and cycles always;
 /// junctions and end points (within +-1 when `noisy`) unless the shape has plates.
 inline bool corpus_topology_matches(const Shape& shape, const Topology& got, bool noisy)

@@ -21,7 +21,6 @@
 #include <CGAL/squared_distance_3.h>
 
 #include <algorithm>
-#include <limits>
 #include <numeric>
 #include <array>
 #include <cmath>
@@ -384,10 +383,14 @@ void prune_spurs(Skeleton_graph<Traits>& g, double ratio, double voxel_size)
   {
     changed = false;
     std::vector<char> doomed(boost::num_vertices(g), 0);
-    // terminal chains not doomed by length, and their length up to the junction's edge
-    std::vector<std::vector<std::size_t>> candidates;
-    std::vector<double> candidate_lengths;
-    std::vector<char> candidate_thin; // ends less than two voxels deep
+    // the terminal chains not doomed by length
+    struct Candidate
+    {
+      std::vector<std::size_t> chain;
+      double length; // up to the edge to the junction
+      bool thin;     // ends less than two voxels deep
+    };
+    std::vector<Candidate> candidates;
     for(vertex end = 0; end < boost::num_vertices(g); ++end)
     {
       if(boost::degree(end, g) != 1)
@@ -429,9 +432,8 @@ void prune_spurs(Skeleton_graph<Traits>& g, double ratio, double voxel_size)
           doomed[v] = 1;
       else
       {
-        candidates.emplace_back(chain.begin(), chain.end());
-        candidate_lengths.push_back(chain_length);
-        candidate_thin.push_back(CGAL::to_double(g[end].radius) < 2 * voxel_size);
+        candidates.push_back({std::vector<std::size_t>(chain.begin(), chain.end()), chain_length,
+                              CGAL::to_double(g[end].radius) < 2 * voxel_size});
       }
     }
     if(!candidates.empty())
@@ -440,28 +442,29 @@ void prune_spurs(Skeleton_graph<Traits>& g, double ratio, double voxel_size)
       // chains (two hairs side by side) is kept unless it is covered without them.
       const Ball_cover cover(g);
       auto sticks_out = [&](std::size_t c, const std::vector<char>& excluded) {
-        return candidate_thin[c] ? cover.sticks_out(candidates[c], excluded, thin_slack, thin_per_radius)
-                                 : cover.sticks_out(candidates[c], excluded, deep_slack, deep_per_radius);
+        const Candidate& k = candidates[c];
+        return k.thin ? cover.sticks_out(k.chain, excluded, thin_slack, thin_per_radius)
+                      : cover.sticks_out(k.chain, excluded, deep_slack, deep_per_radius);
       };
       std::vector<char> excluded(boost::num_vertices(g), 0);
       std::vector<std::size_t> covered;
       for(std::size_t c = 0; c < candidates.size(); ++c)
       {
-        for(std::size_t v : candidates[c])
+        for(std::size_t v : candidates[c].chain)
           excluded[v] = 1;
         if(!sticks_out(c, excluded))
           covered.push_back(c);
-        for(std::size_t v : candidates[c])
+        for(std::size_t v : candidates[c].chain)
           excluded[v] = 0;
       }
       for(std::size_t c : covered)
-        for(std::size_t v : candidates[c])
+        for(std::size_t v : candidates[c].chain)
           excluded[v] = 1;
       bool any = false;
       for(std::size_t c : covered)
         if(!sticks_out(c, excluded))
         {
-          for(std::size_t v : candidates[c])
+          for(std::size_t v : candidates[c].chain)
             doomed[v] = 1;
           any = true;
         }
@@ -470,9 +473,9 @@ void prune_spurs(Skeleton_graph<Traits>& g, double ratio, double voxel_size)
         // Chains that only cover each other (a hair beside a branch tip, two hairs side
         // by side): the shortest goes, one per round.
         const std::size_t shortest = *std::min_element(covered.begin(), covered.end(), [&](std::size_t a, std::size_t b) {
-          return candidate_lengths[a] < candidate_lengths[b];
+          return candidates[a].length < candidates[b].length;
         });
-        for(std::size_t v : candidates[shortest])
+        for(std::size_t v : candidates[shortest].chain)
           doomed[v] = 1;
       }
     }

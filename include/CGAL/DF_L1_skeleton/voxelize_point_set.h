@@ -184,13 +184,13 @@ void refine(Grid_geometry<Traits>& g, std::vector<std::uint8_t>& labels,
 
 // Median distance from a point to its k-th nearest neighbour, over up to 4000 points
 // taken at a regular stride (deterministic): the sampling spacing of the cloud, in
-// input units. `guess` is the first search radius.
-inline double median_kth_neighbour_distance(const std::vector<std::array<double, 3>>& xyz, int k, double guess)
+// input units. `guess` is the first search radius; `grid` holds `xyz`.
+inline double median_kth_neighbour_distance(const std::vector<std::array<double, 3>>& xyz, int k, double guess,
+                                            const Uniform_grid& grid)
 {
   const std::size_t n = xyz.size();
   if(n <= std::size_t(k) || !(guess > 0))
     return 0;
-  const Uniform_grid grid(xyz, guess);
   const std::size_t samples = (std::min)(n, std::size_t(4000));
   std::vector<double> kth, d2;
   kth.reserve(samples);
@@ -213,6 +213,14 @@ inline double median_kth_neighbour_distance(const std::vector<std::array<double,
   }
   std::nth_element(kth.begin(), kth.begin() + kth.size() / 2, kth.end());
   return kth[kth.size() / 2];
+}
+
+// The same, on a grid of cell size `guess` built here.
+inline double median_kth_neighbour_distance(const std::vector<std::array<double, 3>>& xyz, int k, double guess)
+{
+  if(xyz.size() <= std::size_t(k) || !(guess > 0))
+    return 0;
+  return median_kth_neighbour_distance(xyz, k, guess, Uniform_grid(xyz, guess));
 }
 
 // Marks every voxel that a 6-connected walk from the marked voxels reaches through

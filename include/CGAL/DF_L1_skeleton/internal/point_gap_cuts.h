@@ -32,7 +32,6 @@ std::vector<char> on_cycle_vertices(const Graph& g)
     adjacency[b].emplace_back(a, m);
   }
   std::vector<std::size_t> entry(n, std::size_t(-1)), low(n, 0), parent_edge(n, std::size_t(-1)), next(n, 0);
-  std::vector<std::pair<std::size_t, std::size_t>> ends(m);
   std::vector<char> bridge(m, 0);
   std::size_t time = 0;
   for(std::size_t root = 0; root < n; ++root)
@@ -159,20 +158,21 @@ std::size_t cut_point_gaps(Skeleton_graph<Traits>& g, const std::vector<std::arr
         }
       // wider than the sampling spacing at both of its ends: a sparse region of an uneven
       // scan, or an isolated outlier, leaves wide intervals that are not gaps
-      if(widest >= min_width)
-        widest = (std::min)(widest - local_spacing(below), widest - local_spacing(above)) >= 0 ? widest : 0;
-      if(widest >= min_width)
+      if(widest >= min_width && widest >= local_spacing(below) && widest >= local_spacing(above))
         candidates.emplace_back(-widest, v);
     }
   }
   std::sort(candidates.begin(), candidates.end());
   std::vector<char> cut(boost::num_vertices(g), 0);
   std::size_t cuts = 0;
+  std::vector<char> cyclic; // recomputed after each cut
   for(const auto& c : candidates)
   {
-    const std::vector<char> cyclic = on_cycle_vertices(g);
+    if(cyclic.empty())
+      cyclic = on_cycle_vertices(g);
     if(!cyclic[c.second] || boost::degree(c.second, g) != 2)
       continue;
+    cyclic.clear();
     boost::clear_vertex(c.second, g);
     cut[c.second] = 1;
     ++cuts;
