@@ -10,6 +10,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <limits>
 #include <utility>
 #include <vector>
 
@@ -82,8 +83,10 @@ std::vector<char> on_cycle_vertices(const Graph& g)
 // voxels could not separate (parts 1 or 2 voxels apart: their boundary voxels touch, and
 // the pocket between them is taken for interior). Such a curve runs from one surface
 // straight into the other: the input points near its line, projected on it, leave an
-// empty interval at the vertex, wider than the sampling spacing. Inside a part, however
-// thin, the surface surrounds the curve and its projection has no such interval. A
+// empty interval near the vertex, wider than the sampling spacing, and the points that
+// bound it lie closer to the line than the local radius (the two surfaces cross it).
+// Inside a part, however thin, the surface surrounds the curve: its projection has no
+// such interval, and a gap in its sampling is bounded by the wall, a radius away. A
 // candidate is a vertex of degree 2 on a cycle whose local radius is at most 2.5 voxels
 // (the pocket is thin); the widest gaps are cut first, each only while its vertex is
 // still on a cycle, so a cut never splits a component. `spacing` is the sampling spacing
@@ -93,7 +96,7 @@ std::size_t cut_point_gaps(Skeleton_graph<Traits>& g, const std::vector<std::arr
                            double voxel, double spacing)
 {
   typedef std::array<double, 3> A;
-  const double reach_along = 2.5 * voxel, centre_window = 1.5 * voxel, max_radius = 2.5 * voxel;
+  const double reach_along = 5 * voxel, centre_window = 2 * voxel, max_radius = 2.5 * voxel, band = voxel;
   const double min_width = (std::max)(0.6 * voxel, spacing);
   std::vector<std::pair<double, std::size_t>> nearest;
   auto local_spacing = [&](std::size_t i) { // distance to the 6th nearest neighbour
@@ -148,6 +151,7 @@ std::size_t cut_point_gaps(Skeleton_graph<Traits>& g, const std::vector<std::arr
       // line are then that outlier and its like
       double widest = 0;
       std::size_t below = 0, above = 0;
+      double below_at = 0, above_at = 0;
       for(std::size_t k = 5; k + 6 < along.size(); ++k)
         if(along[k].first < centre_window && along[k + 1].first > -centre_window &&
            along[k + 1].first - along[k].first > widest)
@@ -155,10 +159,26 @@ std::size_t cut_point_gaps(Skeleton_graph<Traits>& g, const std::vector<std::arr
           widest = along[k + 1].first - along[k].first;
           below = along[k].second;
           above = along[k + 1].second;
+          below_at = along[k].first;
+          above_at = along[k + 1].first;
         }
+      // A curve that leaves a part crosses its surface: the points bounding the gap lie
+      // near the line. Along a thin part, a sampling gap is bounded by the wall, as far
+      // from the line as the local radius.
+      double below_offset = std::numeric_limits<double>::infinity(), above_offset = below_offset;
+      for(const auto& x : along)
+      {
+        const A d{{xyz[x.second][0] - p[0], xyz[x.second][1] - p[1], xyz[x.second][2] - p[2]}};
+        const double offset = std::sqrt((std::max)(0.0, d[0] * d[0] + d[1] * d[1] + d[2] * d[2] - x.first * x.first));
+        if(x.first <= below_at && x.first >= below_at - band)
+          below_offset = (std::min)(below_offset, offset);
+        if(x.first >= above_at && x.first <= above_at + band)
+          above_offset = (std::min)(above_offset, offset);
+      }
       // wider than the sampling spacing at both of its ends: a sparse region of an uneven
       // scan, or an isolated outlier, leaves wide intervals that are not gaps
-      if(widest >= min_width && widest >= local_spacing(below) && widest >= local_spacing(above))
+      if(widest >= min_width && (std::max)(below_offset, above_offset) < CGAL::to_double(g[v].radius) &&
+         widest >= local_spacing(below) && widest >= local_spacing(above))
         candidates.emplace_back(-widest, v);
     }
   }
