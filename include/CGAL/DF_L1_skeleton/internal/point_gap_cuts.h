@@ -10,7 +10,6 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
-#include <limits>
 #include <utility>
 #include <vector>
 
@@ -121,7 +120,17 @@ std::size_t cut_point_gaps(Skeleton_graph<Traits>& g, const std::vector<std::arr
   std::vector<std::pair<double, std::size_t>> candidates; // (minus the empty width, vertex)
   {
     const std::vector<char> cyclic = on_cycle_vertices(g);
-    std::vector<std::pair<double, std::size_t>> along; // (abscissa along the curve, point)
+    struct Near_point
+    {
+      double abscissa; // along the curve
+      std::size_t point;
+      double offset2; // squared distance to the curve's line
+      bool operator<(const Near_point& o) const
+      {
+        return abscissa < o.abscissa || (abscissa == o.abscissa && point < o.point);
+      }
+    };
+    std::vector<Near_point> along;
     for(std::size_t v = 0; v < boost::num_vertices(g); ++v)
     {
       if(!cyclic[v] || boost::degree(v, g) != 2 ||
@@ -142,7 +151,7 @@ std::size_t cut_point_gaps(Skeleton_graph<Traits>& g, const std::vector<std::arr
         const A d{{xyz[i][0] - p[0], xyz[i][1] - p[1], xyz[i][2] - p[2]}};
         const double s = d[0] * t[0] + d[1] * t[1] + d[2] * t[2];
         if(std::abs(s) <= reach_along && d2 - s * s <= disk * disk)
-          along.emplace_back(s, i);
+          along.push_back({s, i, d2 - s * s});
         return true;
       });
       std::sort(along.begin(), along.end());
@@ -150,35 +159,29 @@ std::size_t cut_point_gaps(Skeleton_graph<Traits>& g, const std::vector<std::arr
       // inside a part lowers its local radius, and the few points near the curve's
       // line are then that outlier and its like
       double widest = 0;
-      std::size_t below = 0, above = 0;
-      double below_at = 0, above_at = 0;
+      std::size_t gap = 0; // the interval lies between along[gap] and along[gap + 1]
       for(std::size_t k = 5; k + 6 < along.size(); ++k)
-        if(along[k].first < centre_window && along[k + 1].first > -centre_window &&
-           along[k + 1].first - along[k].first > widest)
+        if(centre_window > along[k].abscissa && along[k + 1].abscissa > -centre_window &&
+           along[k + 1].abscissa - along[k].abscissa > widest)
         {
-          widest = along[k + 1].first - along[k].first;
-          below = along[k].second;
-          above = along[k + 1].second;
-          below_at = along[k].first;
-          above_at = along[k + 1].first;
+          widest = along[k + 1].abscissa - along[k].abscissa;
+          gap = k;
         }
+      if(widest < min_width)
+        continue;
       // A curve that leaves a part crosses its surface: the points bounding the gap lie
       // near the line. Along a thin part, a sampling gap is bounded by the wall, as far
       // from the line as the local radius.
-      double below_offset = std::numeric_limits<double>::infinity(), above_offset = below_offset;
-      for(const auto& x : along)
-      {
-        const A d{{xyz[x.second][0] - p[0], xyz[x.second][1] - p[1], xyz[x.second][2] - p[2]}};
-        const double offset = std::sqrt((std::max)(0.0, d[0] * d[0] + d[1] * d[1] + d[2] * d[2] - x.first * x.first));
-        if(x.first <= below_at && x.first >= below_at - band)
-          below_offset = (std::min)(below_offset, offset);
-        if(x.first >= above_at && x.first <= above_at + band)
-          above_offset = (std::min)(above_offset, offset);
-      }
+      double below_offset2 = along[gap].offset2, above_offset2 = along[gap + 1].offset2;
+      for(std::size_t k = gap; k-- > 0 && along[k].abscissa >= along[gap].abscissa - band;)
+        below_offset2 = (std::min)(below_offset2, along[k].offset2);
+      for(std::size_t k = gap + 2; k < along.size() && along[k].abscissa <= along[gap + 1].abscissa + band; ++k)
+        above_offset2 = (std::min)(above_offset2, along[k].offset2);
+      const double offset = std::sqrt((std::max)({0.0, below_offset2, above_offset2}));
       // wider than the sampling spacing at both of its ends: a sparse region of an uneven
       // scan, or an isolated outlier, leaves wide intervals that are not gaps
-      if(widest >= min_width && (std::max)(below_offset, above_offset) < CGAL::to_double(g[v].radius) &&
-         widest >= local_spacing(below) && widest >= local_spacing(above))
+      if(offset < CGAL::to_double(g[v].radius) && widest >= local_spacing(along[gap].point) &&
+         widest >= local_spacing(along[gap + 1].point))
         candidates.emplace_back(-widest, v);
     }
   }
