@@ -106,6 +106,7 @@ Row run_corpus_case(const Options& o, const DF_L1_test::Shape& shape, const std:
     row.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     DF_L1_test::Quality_options qo;
     qo.junction_merge_radius_fraction = 1.0;
+    qo.merge_within_junction_zones = true;
     const double voxel = CGAL::to_double(s.distance_field().voxel_size);
     const DF_L1_test::Skeleton_quality q = DF_L1_test::measure_quality(shape, g, voxel, qo);
     row.got = counts(q.topology);

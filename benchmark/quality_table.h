@@ -351,8 +351,9 @@ inline std::string markdown_report(const std::vector<Row>& rows, const std::vect
      << ".\n\n";
 
   md << "## Designed topology, % of cases, per family and degradation\n\n";
-  md << "Topology: components and cycles; junctions (junction vertices joined by a path shorter than the true local radius "
-        "count once) and end points (+-1 under noise) except on shapes with plates.\n\n";
+  md << "Topology: components and cycles; junctions (junction vertices joined by a path shorter than the true local radius, "
+        "or lying in the zone of the same designed junction, where its parts are not yet 2 voxels apart, count once) and "
+        "end points (+-1 under noise) except on shapes with plates.\n\n";
   md << "| family |";
   for(const std::string& d : ctx.degradations)
     md << ' ' << d << " |";

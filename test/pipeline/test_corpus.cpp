@@ -164,6 +164,7 @@ TEST_CASE("corpus: a sample of families and degradations keeps its quality", "[c
       CGAL::DF_L1_skeletonization<K> s(sample.points);
       Quality_options qo;
       qo.junction_merge_radius_fraction = 1.0;
+      qo.merge_within_junction_zones = true;
       const Skeleton_quality q = measure_quality(shape, s.skeleton(), CGAL::to_double(s.distance_field().voxel_size), qo);
       const bool ok = corpus_topology_matches(shape, q.topology, d.noisy);
       std::cout << "corpus sample " << shape.name() << ' ' << d.name << ": " << compact(q.topology) << " expected "
@@ -193,6 +194,7 @@ TEST_CASE("corpus: a ring whose ends come 1 to 2 voxels close is cut open, close
     CGAL::DF_L1_skeletonization<K> s(sample.points);
     Quality_options qo;
     qo.junction_merge_radius_fraction = 1.0;
+    qo.merge_within_junction_zones = true;
     const Skeleton_quality q = measure_quality(shape, s.skeleton(), CGAL::to_double(s.distance_field().voxel_size), qo);
     INFO(shape.name() << ' ' << degradation << ": " << compact(q.topology) << " expected " << compact(shape.expected_topology()));
     CHECK(corpus_topology_matches(shape, q.topology, d.noisy));

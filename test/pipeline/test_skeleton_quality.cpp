@@ -394,6 +394,56 @@ TEST_CASE("quality: optionally, junction vertices joined by a path within the lo
   CHECK(measure_quality(t, axis_graph(t), voxel_of(t), lenient).topology == t.expected_topology());
 }
 
+TEST_CASE("quality: a k-way junction split within the overlap of its parts counts once with junction zones", "[quality]")
+{
+  // A trunk and three children leaving at 15 degrees from the trunk's direction: the
+  // children overlap for several of their radii beyond the node.
+  const double r = 0.05;
+  Shape shape("fan", {4, 1, 0, 1});
+  const Point_3 o(0, 0, 0);
+  shape.add_round_cone(Point_3(0, -1, 0), o, r, r);
+  const double tilt = 15 * CGAL_PI / 180;
+  std::vector<Point_3> tips;
+  for(int c = 0; c < 3; ++c) {
+    const double azimuth = 2 * CGAL_PI * c / 3;
+    tips.push_back(Point_3(std::sin(tilt) * std::cos(azimuth), std::cos(tilt), std::sin(tilt) * std::sin(azimuth)));
+    shape.add_round_cone(o, tips.back(), r, r);
+  }
+  const std::vector<Junction_zone> zones = junction_zones(shape);
+  REQUIRE(zones.size() == 1);
+  // Children 2 sin(15 deg) sin(60 deg) = 0.448 apart per unit length part at 2r = 0.1.
+  CHECK(zones.front().radius == Approx(0.1 / 0.448).epsilon(0.05));
+
+  // The skeleton resolves the 4-way junction as two 3-way ones 0.15 apart (3 radii).
+  Graph g;
+  auto vertex = [&](const Point_3& p) {
+    const Vertex v = boost::add_vertex(g);
+    g[v].point = p;
+    return v;
+  };
+  const Vertex trunk = vertex(Point_3(0, -1, 0)), j1 = vertex(o), j2 = vertex(Point_3(0, 0.15, 0));
+  boost::add_edge(trunk, j1, g);
+  boost::add_edge(j1, j2, g);
+  boost::add_edge(j1, vertex(tips[0]), g);
+  boost::add_edge(j2, vertex(tips[1]), g);
+  boost::add_edge(j2, vertex(tips[2]), g);
+  Quality_options options;
+  options.junction_merge_radius_fraction = 1;
+  CHECK(measure_quality(shape, g, voxel_of(shape), options).topology.junctions == 2);
+  options.merge_within_junction_zones = true;
+  CHECK(measure_quality(shape, g, voxel_of(shape), options).topology == shape.expected_topology());
+  // Beyond the zone, two junctions stay two.
+  boost::clear_vertex(j2, g);
+  const Vertex far = vertex(Point_3(0, 0.6, 0));
+  boost::add_edge(j1, far, g);
+  boost::add_edge(far, vertex(tips[1]), g);
+  boost::add_edge(far, vertex(tips[2]), g);
+  CHECK(measure_quality(shape, g, voxel_of(shape), options).topology.junctions == 2);
+  // Distinct junctions stay distinct: theta's are a diameter apart.
+  const Shape t = theta();
+  CHECK(measure_quality(t, axis_graph(t), voxel_of(t), options).topology == t.expected_topology());
+}
+
 TEST_CASE("quality: isolated vertices are components; a graph without edges is judged by its vertices", "[quality]")
 {
   SECTION("capsule axis plus a lone vertex")

@@ -51,6 +51,14 @@ struct Quality_options
   /// at its nearest axis point): a small tree of junctions inside one junction ball
   /// then counts once (the voxel graph of many_armed has such trees).
   double junction_merge_radius_fraction = 0.0;
+  /// Off by default. When true, the vertices of degree >= 3 that lie in the junction
+  /// zone of the same designed junction (`junction_zones()`) count once: where k parts
+  /// leave a node at small angles they overlap for several radii, and a skeleton may
+  /// resolve the k-way junction as up to k - 2 three-way ones anywhere in that overlap.
+  bool merge_within_junction_zones = false;
+  /// The gap between two parts' surfaces, in voxels, from which a junction zone
+  /// (`junction_zones()`) takes them for separate: the resolution of the grid.
+  double junction_zone_separation_voxels = 2.0;
   /// Edges are sampled at most this many voxels apart.
   double sample_step_voxels = 0.25;
   /// A point of the true axis is covered when the graph passes within
@@ -242,6 +250,20 @@ private:
   std::vector<std::size_t> start_, items_;
 };
 
+/// Distance from `p` to the polyline `pl` and the radius of `pl` at its nearest sample.
+inline std::pair<double, double> distance_to_polyline(const V3& p, const Skeleton_polyline& pl)
+{
+  double best2 = std::numeric_limits<double>::infinity(), radius = 0;
+  for(std::size_t i = 0; i + 1 < pl.points.size(); ++i) {
+    const double d2 = squared_distance_to_segment(p, to_v3(pl.points[i]), to_v3(pl.points[i + 1]));
+    if(d2 < best2) {
+      best2 = d2;
+      radius = std::max(pl.radii[i], pl.radii[i + 1]);
+    }
+  }
+  return {std::sqrt(best2), radius};
+}
+
 inline std::size_t find_root(std::vector<std::size_t>& parent, std::size_t i)
 {
   while(parent[i] != i)
@@ -250,6 +272,64 @@ inline std::size_t find_root(std::vector<std::size_t>& parent, std::size_t i)
 }
 
 } // namespace quality_internal
+
+/// A designed junction and the ball around it where its parts still overlap.
+struct Junction_zone
+{
+  quality_internal::V3 centre;
+  double radius = 0;
+};
+
+/// The junction zones of `shape`: for every node of its skeleton graph of degree >= 3,
+/// the ball centred there that reaches as far as the farthest point where two of the
+/// parts leaving the node are not yet `separation` apart (walking out along each axis
+/// curve, the first sample where the distance to the other axis exceeds the sum of the
+/// radii plus `separation`), and at least the local radius at the node. With
+/// `separation` 0, parts leaving at 25 degrees from each other overlap for about 4.6 of
+/// their radii; a voxel grid tells two parts apart only when their surfaces are a voxel
+/// or two apart (the occupied voxels of each reach up to a voxel beyond its surface).
+inline std::vector<Junction_zone> junction_zones(const Shape& shape, double separation = 0)
+{
+  using quality_internal::V3;
+  using quality_internal::to_v3;
+  std::vector<Junction_zone> zones;
+  const std::vector<Skeleton_polyline> axis = shape.skeleton_polylines();
+  const double eps = 1e-9 * shape.bbox_diagonal();
+  for(const Skeleton_node& node : shape.skeleton_nodes()) {
+    if(node.degree < 3)
+      continue;
+    const V3 c = to_v3(node.point);
+    // The incident curves, as (curve, walked from its back).
+    std::vector<std::pair<std::size_t, bool>> arms;
+    for(std::size_t i = 0; i < axis.size(); ++i) {
+      if(axis[i].points.size() < 2)
+        continue;
+      if(internal::norm(to_v3(axis[i].points.front()) - c) <= eps)
+        arms.emplace_back(i, false);
+      if(internal::norm(to_v3(axis[i].points.back()) - c) <= eps)
+        arms.emplace_back(i, true);
+    }
+    Junction_zone zone{c, std::max(0.0, -shape.signed_distance(node.point))};
+    for(const auto& a : arms)
+      for(const auto& b : arms) {
+        if(a == b)
+          continue;
+        const Skeleton_polyline& pa = axis[a.first];
+        const Skeleton_polyline& pb = axis[b.first];
+        const std::size_t count = pa.points.size();
+        for(std::size_t k = 0; k < count; ++k) {
+          const std::size_t i = a.second ? count - 1 - k : k;
+          const V3 p = to_v3(pa.points[i]);
+          const std::pair<double, double> other = quality_internal::distance_to_polyline(p, pb);
+          zone.radius = std::max(zone.radius, internal::norm(p - c));
+          if(other.first > pa.radii[i] + other.second + separation)
+            break;
+        }
+      }
+    zones.push_back(zone);
+  }
+  return zones;
+}
 
 /// Measures `g` against the known skeleton of `shape`; `voxel_size` (input units) sets
 /// the tolerances (see `Quality_options` and the fields of `Skeleton_quality`).
@@ -337,6 +417,31 @@ Skeleton_quality measure_quality(const Shape& shape, const Graph& g, double voxe
       for(std::size_t t : touched)
         reach[t] = std::numeric_limits<double>::infinity();
       touched.clear();
+    }
+  }
+  if(options.merge_within_junction_zones) {
+    // Each junction vertex joins the zone it lies deepest in (relative to the radius).
+    const std::vector<Junction_zone> zones = junction_zones(shape, options.junction_zone_separation_voxels * voxel_size);
+    std::vector<std::size_t> first_in_zone(zones.size(), n);
+    for(std::size_t j = 0; j < n; ++j) {
+      if(degree[j] < 3)
+        continue;
+      std::size_t best = zones.size();
+      double best_ratio = 1;
+      for(std::size_t z = 0; z < zones.size(); ++z) {
+        const double ratio = internal::norm(position[j] - zones[z].centre) / zones[z].radius;
+        if(ratio <= best_ratio) {
+          best_ratio = ratio;
+          best = z;
+        }
+      }
+      if(best == zones.size())
+        continue;
+      if(first_in_zone[best] == n)
+        first_in_zone[best] = j;
+      else
+        junction_parent[quality_internal::find_root(junction_parent, j)] =
+          quality_internal::find_root(junction_parent, first_in_zone[best]);
     }
   }
   for(std::size_t i = 0; i < n; ++i) {
