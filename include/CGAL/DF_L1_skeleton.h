@@ -194,7 +194,8 @@ public:
     upsampled_ = true;
   }
 
-  /// Voxelizes the kept and added points (`voxelize_point_set()`).
+  /// Voxelizes the kept and added points (`voxelize_point_set()`), without opening the
+  /// crotches (`open_crotches`) in the clouds it smoothed.
   void voxelize()
   {
     if(raw_grid_)
@@ -203,7 +204,8 @@ public:
     raw_grid_ = std::make_unique<Voxel_grid>(DF_L1::voxelize_point_set<ConcurrencyTag>(
       kept_and_added_points(), parameters::voxel_resolution(voxel_resolution_,
            parameters::initial_voxel_size(initial_voxel_size_,
-           parameters::exterior_propagation_steps(exterior_propagation_steps_)))));
+           parameters::exterior_propagation_steps(exterior_propagation_steps_,
+           parameters::open_crotches(!denoised_))))));
   }
 
   /// Removes the outlier voxels (`remove_outlier_voxels()`) and flags their points.

@@ -3,6 +3,7 @@
 #include "support/synthetic_shapes.h"
 
 #include <CGAL/DF_L1_skeleton.h>
+#include <CGAL/DF_L1_skeleton/internal/contractible_cycles.h>
 #include <CGAL/DF_L1_skeleton/internal/voxel_curve_graph.h>
 #include <CGAL/DF_L1_skeleton/internal/voxel_topology.h>
 
@@ -257,4 +258,69 @@ TEST_CASE("voxel topology: simple voxels and loops of voxel sets", "[initial][to
   CHECK(filled.cycles == 0);
   CHECK(filled.components == 1);
   CHECK(DF::skeleton_statistics(DF::internal::voxel_curve_graph<Kernel>(grid, line)).cycles == 0);
+}
+
+TEST_CASE("initial skeleton: a cycle that bounds a disk in the solid is cut, one around a hole is kept", "[initial]")
+{
+  // A 30 x 30 x 8 plate of interior voxels inside a boundary layer; in the second case
+  // with a square hole of 6 x 6 voxels through its middle.
+  DF::Grid_geometry<Kernel> grid;
+  grid.dims = {{34, 34, 12}};
+  auto labels_with_hole = [&](int hole) {
+    std::vector<DF::Voxel_label> labels(grid.size(), DF::Voxel_label::EXTERIOR);
+    for(int k = 1; k <= 10; ++k)
+      for(int j = 1; j <= 32; ++j)
+        for(int i = 1; i <= 32; ++i)
+        {
+          const bool in_hole = std::abs(i - 16.5) < hole / 2.0 + 1 && std::abs(j - 16.5) < hole / 2.0 + 1;
+          const bool rim = k == 1 || k == 10 || i == 1 || i == 32 || j == 1 || j == 32 ||
+                           (hole > 0 && std::abs(i - 16.5) < hole / 2.0 + 1.5 && std::abs(j - 16.5) < hole / 2.0 + 1.5);
+          if(hole > 0 && in_hole)
+            continue;
+          labels[grid.index(i, j, k)] = rim ? DF::Voxel_label::BOUNDARY : DF::Voxel_label::INTERIOR;
+        }
+    return labels;
+  };
+  // A square loop of 24 vertices around the plate's centre, in its mid-plane, with a
+  // tail at two corners (junctions).
+  auto loop_graph = [&]() {
+    DF::Skeleton_graph<Kernel> g;
+    std::vector<std::size_t> ring;
+    const int corners[4][2] = {{8, 8}, {25, 8}, {25, 25}, {8, 25}};
+    for(int c = 0; c < 4; ++c)
+      for(int s = 0; s < 6; ++s)
+      {
+        const double t = s / 6.0;
+        const double x = corners[c][0] + t * (corners[(c + 1) % 4][0] - corners[c][0]);
+        const double y = corners[c][1] + t * (corners[(c + 1) % 4][1] - corners[c][1]);
+        const std::size_t v = boost::add_vertex(g);
+        g[v].point = Point_3(x + 0.5, y + 0.5, 5.5);
+        g[v].radius = 2;
+        ring.push_back(v);
+      }
+    for(std::size_t i = 0; i < ring.size(); ++i)
+      boost::add_edge(ring[i], ring[(i + 1) % ring.size()], g);
+    for(std::size_t corner : {std::size_t(0), std::size_t(12)})
+    {
+      const std::size_t tail = boost::add_vertex(g);
+      g[tail].point = Point_3(g[ring[corner]].point.x() - 4, g[ring[corner]].point.y() - 4, 5.5);
+      g[tail].radius = 2;
+      boost::add_edge(ring[corner], tail, g);
+    }
+    return g;
+  };
+  SECTION("solid plate: the loop goes")
+  {
+    DF::Skeleton_graph<Kernel> g = loop_graph();
+    CHECK(DF::internal::cut_contractible_cycles(g, grid, labels_with_hole(0)) == 1);
+    const DF::Skeleton_statistics s = DF::skeleton_statistics(g);
+    CHECK(s.cycles == 0);
+    CHECK(s.components == 1);
+  }
+  SECTION("plate with a hole: the loop around it stays")
+  {
+    DF::Skeleton_graph<Kernel> g = loop_graph();
+    CHECK(DF::internal::cut_contractible_cycles(g, grid, labels_with_hole(6)) == 0);
+    CHECK(DF::skeleton_statistics(g).cycles == 1);
+  }
 }

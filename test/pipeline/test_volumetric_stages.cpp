@@ -10,11 +10,16 @@
 #include <CGAL/DF_L1_skeleton/skeleton_statistics.h>
 #include <CGAL/DF_L1_skeleton/upsample_sparse_regions.h>
 #include <CGAL/DF_L1_skeleton/voxelize_point_set.h>
+#include <CGAL/DF_L1_skeleton/internal/lines_of_sight.h>
+#include <CGAL/DF_L1_skeleton/internal/voxel_components.h>
+#include <CGAL/DF_L1_skeleton/internal/voxel_curve_graph.h>
 
 #include <catch2/catch.hpp>
 
 #include <algorithm>
 #include <array>
+#include <cmath>
+#include <utility>
 #include <cstdint>
 #include <iterator>
 #include <vector>
@@ -419,4 +424,125 @@ TEST_CASE("bad input to the stages throws Invalid_input", "[errors]")
   const auto flat_skeleton = DF::extract_initial_skeleton(DF::compute_distance_field(voxels_of(flat)));
   CHECK(flat_skeleton.points.empty());
   CHECK(boost::num_vertices(flat_skeleton.graph) == 0);
+}
+
+namespace {
+
+// Labels of a grid built voxel by voxel: `label(i, j, k)` for every voxel.
+template <class F>
+std::vector<std::uint8_t> labels_of(const DF::Grid_geometry<Kernel>& g, const F& label)
+{
+  std::vector<std::uint8_t> labels(g.size());
+  for(int k = 0; k < g.dims[2]; ++k)
+    for(int j = 0; j < g.dims[1]; ++j)
+      for(int i = 0; i < g.dims[0]; ++i)
+        labels[g.index(i, j, k)] = std::uint8_t(label(i, j, k));
+  return labels;
+}
+
+// Components (26) and first Betti number of the solid: occupied and interior voxels.
+std::pair<long, long> solid_topology(const DF::Grid_geometry<Kernel>& g, const std::vector<std::uint8_t>& labels)
+{
+  std::vector<std::size_t> solid;
+  for(std::size_t v = 0; v < labels.size(); ++v)
+    if(labels[v] != std::uint8_t(DF::Voxel_label::EXTERIOR))
+      solid.push_back(v);
+  long components = 0;
+  DF::internal::for_each_26_component(g, [&](std::size_t v) { return labels[v] != std::uint8_t(DF::Voxel_label::EXTERIOR); },
+                                      [&](const std::vector<std::size_t>&) { ++components; });
+  return {components, DF::internal::first_betti_number(g, solid, components, 0)};
+}
+
+} // namespace
+
+TEST_CASE("voxels: interior voxels that see the exterior along many lines are opened, enclosed ones are not", "[voxels]")
+{
+  typedef DF::Voxel_label L;
+  DF::Grid_geometry<Kernel> g;
+  g.dims = {{48, 48, 24}};
+  const std::vector<char> keep(g.size(), 0);
+  auto count = [&](const std::vector<std::uint8_t>& labels, L l) {
+    return std::count(labels.begin(), labels.end(), std::uint8_t(l));
+  };
+
+  SECTION("the pocket between two rods that leave a node at 30 degrees")
+  {
+    // Rods of radius 1.5 voxels from (4, 24) along +-15 degrees, in the slab 9 <= k <= 14;
+    // the wedge between them is labelled interior, as the coarse levels leave it.
+    const double c = std::cos(CGAL_PI / 12), s = std::sin(CGAL_PI / 12);
+    auto rod_distance = [&](int i, int j, double side) {
+      const double x = i - 4.0, y = j - 24.0, t = (std::max)(0.0, (std::min)(40.0, x * c + side * y * s));
+      const double dx = x - t * c, dy = y - side * t * s;
+      return std::sqrt(dx * dx + dy * dy);
+    };
+    const std::vector<std::uint8_t> before = labels_of(g, [&](int i, int j, int k) {
+      if(k < 9 || k > 14)
+        return L::EXTERIOR;
+      if(rod_distance(i, j, 1) <= 1.5 || rod_distance(i, j, -1) <= 1.5)
+        return L::BOUNDARY;
+      const double angle = std::atan2(j - 24.0, i - 4.0);
+      return i > 4 && i < 42 && std::abs(angle) < CGAL_PI / 12 ? L::INTERIOR : L::EXTERIOR;
+    });
+    std::vector<std::uint8_t> labels = before;
+    const auto opened = DF::internal::open_lines_of_sight(g, labels, keep, 1.0, 10, 2);
+    // The voxels next to the rods are within the band that closes the gaps between
+    // samples; those farther than 2.5 voxels from both rods open.
+    std::size_t far = 0, far_opened = 0;
+    for(int k = 0; k < g.dims[2]; ++k)
+      for(int j = 0; j < g.dims[1]; ++j)
+        for(int i = 0; i < g.dims[0]; ++i)
+          if(before[g.index(i, j, k)] == std::uint8_t(L::INTERIOR) && rod_distance(i, j, 1) > 2.5 &&
+             rod_distance(i, j, -1) > 2.5)
+          {
+            ++far;
+            far_opened += labels[g.index(i, j, k)] == std::uint8_t(L::EXTERIOR);
+          }
+    INFO("pocket voxels " << count(before, L::INTERIOR) << ", opened " << opened << "; away from the rods " << far
+                          << ", opened " << far_opened);
+    CHECK(double(opened) > 0.5 * double(count(before, L::INTERIOR)));
+    CHECK(double(far_opened) > 0.8 * double(far));
+    CHECK(solid_topology(g, labels) == solid_topology(g, before));
+  }
+
+  auto box = [&](int hole) {
+    return labels_of(g, [&](int i, int j, int k) {
+      const bool in = i >= 8 && i <= 40 && j >= 8 && j <= 40 && k >= 4 && k <= 20;
+      const bool face = in && (i == 8 || i == 40 || j == 8 || j == 40 || k == 4 || k == 20);
+      // the hole takes the edge between the lid and a wall: lines see out through it
+      // upwards and sideways
+      const bool in_hole = std::abs(j - 24) <= hole && ((k == 20 && i >= 40 - 2 * hole) || (i == 40 && k >= 20 - 2 * hole));
+      if(face && hole > 0 && in_hole)
+        return L::EXTERIOR;
+      return face ? L::BOUNDARY : in ? L::INTERIOR : L::EXTERIOR;
+    });
+  };
+  SECTION("a closed box keeps its inside")
+  {
+    std::vector<std::uint8_t> labels = box(-1);
+    CHECK(DF::internal::open_lines_of_sight(g, labels, keep, 1.0, 10, 2) == 0);
+  }
+  SECTION("a box with a hole over an edge is never pierced, and kept whole when opposite lines are asked for")
+  {
+    const std::vector<std::uint8_t> before = box(4);
+    std::vector<std::uint8_t> labels = before;
+    // Without the opposite pairs the lines through the hole open a dent; the topology
+    // guard keeps the box one solid without a tunnel.
+    const std::size_t dent = DF::internal::open_lines_of_sight(g, labels, keep, 1.0, 10, 0);
+    CHECK(dent > 0);
+    CHECK(count(labels, L::INTERIOR) > 0.8 * count(before, L::INTERIOR));
+    CHECK(solid_topology(g, labels) == solid_topology(g, before));
+    // Only the voxels near the edge see out on two opposite sides (down through the wall
+    // and up through the lid).
+    labels = before;
+    const std::size_t paired = DF::internal::open_lines_of_sight(g, labels, keep, 1.0, 10, 2);
+    INFO("opened without pairs " << dent << ", with two pairs " << paired);
+    CHECK(2 * paired < dent);
+    CHECK(solid_topology(g, labels) == solid_topology(g, before));
+    // what the parity vote keeps inside stays inside
+    std::vector<char> inside(g.size(), 0);
+    for(std::size_t v = 0; v < g.size(); ++v)
+      inside[v] = before[v] == std::uint8_t(L::INTERIOR);
+    labels = before;
+    CHECK(DF::internal::open_lines_of_sight(g, labels, inside, 1.0, 10, 2) == 0);
+  }
 }

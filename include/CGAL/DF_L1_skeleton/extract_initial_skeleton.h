@@ -10,12 +10,14 @@
 #include <CGAL/DF_L1_skeleton/distance_field.h>
 #include <CGAL/DF_L1_skeleton/errors.h>
 #include <CGAL/DF_L1_skeleton/internal/box_sum.h>
+#include <CGAL/DF_L1_skeleton/internal/contractible_cycles.h>
 #include <CGAL/DF_L1_skeleton/internal/curve_thinning.h>
 #include <CGAL/DF_L1_skeleton/internal/parallel_for.h>
 #include <CGAL/DF_L1_skeleton/internal/voxel_components.h>
 #include <CGAL/DF_L1_skeleton/internal/voxel_curve_graph.h>
 #include <CGAL/DF_L1_skeleton/internal/voxel_morphology.h>
 #include <CGAL/DF_L1_skeleton/named_parameters.h>
+#include <CGAL/DF_L1_skeleton/skeleton_statistics.h>
 
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/squared_distance_3.h>
@@ -553,6 +555,12 @@ void prune_spurs(Skeleton_graph<Traits>& g, double ratio, double voxel_size)
 ///   ball lies within 2 voxels + r(v) of the others: at a scanned hoof or a twig tip the
 ///   balls are a voxel or two wide, and more slack would swallow the tip. In a thin part,
 ///   the local radius is the distance to the nearest unoccupied voxel less half a voxel;
+/// - a cycle of the graph that bounds a disk inside the solid of occupied and interior
+///   voxels (the cone from its centroid over its edges, sampled every 0.4 voxel, meets
+///   no exterior or outlier voxel) encloses no hole of the shape: the thinned solid had a
+///   tunnel there that boundary voxels plug (noise that went through a plate). Such a
+///   cycle loses its thinner arc between two junctions, and the spurs are pruned again.
+///   A handle's loop cannot bound a disk inside the solid, so it stays whatever the disk;
 /// - with `occupied_depth` (our addition, for smoothed noisy clouds), the depth that the
 ///   ridge test, the thinning, the end test and the radii read is not the distance field
 ///   but the distance to the nearest unoccupied voxel less one, and the solid also takes
@@ -692,6 +700,8 @@ Initial_skeleton<Traits> extract_initial_skeleton(const Distance_field<Traits>& 
     result.graph[d].radius = (std::max)({CGAL::to_double(field.distance(v)), thin_radius, occupied_radius});
   }
   internal::prune_spurs(result.graph, spur_ratio, voxel);
+  if(skeleton_statistics(result.graph).cycles > 0 && internal::cut_contractible_cycles(result.graph, field, field.labels) > 0)
+    internal::prune_spurs(result.graph, spur_ratio, voxel);
   return result;
 }
 

@@ -48,6 +48,7 @@ enum df_l1_denoising_t { df_l1_denoising };
 enum df_l1_denoising_neighbors_t { df_l1_denoising_neighbors };
 enum df_l1_thin_parts_t { df_l1_thin_parts };
 enum df_l1_occupied_depth_t { df_l1_occupied_depth };
+enum df_l1_open_crotches_t { df_l1_open_crotches };
 } // namespace internal_np
 
 namespace parameters {
@@ -109,6 +110,12 @@ CGAL_DF_L1_ADD_NAMED_PARAMETER(df_l1_thin_parts, thin_parts)
 /// boundary shell is several voxels thick and leaves thin limbs no interior voxel two
 /// deep). `thin_parts` is then moot: the occupied voxels hold the thin parts.
 CGAL_DF_L1_ADD_NAMED_PARAMETER(df_l1_occupied_depth, occupied_depth)
+/// \ingroup PkgDFL1SkeletonNamedParameters
+/// Whether the voxelization opens the interior voxels that see the exterior along 10 or
+/// more of the 26 grid directions: the crotches between close parts, narrower than the
+/// sweeping balls (default `true`; `DF_L1_skeletonization` turns it off for smoothed
+/// noisy clouds, whose ragged shell lets the lines into the surface layer).
+CGAL_DF_L1_ADD_NAMED_PARAMETER(df_l1_open_crotches, open_crotches)
 /// \ingroup PkgDFL1SkeletonNamedParameters
 /// The refinement method, a `CGAL::DF_L1::Skeletonization_method` (default
 /// `DISTANCE_FIELD_GUIDED`; `L1_MEDIAL` switches the guidance off, as a baseline).

@@ -1,0 +1,176 @@
+// Copyright (c) 2026 DF_L1_skeleton contributors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+#ifndef CGAL_DF_L1_SKELETON_INTERNAL_LINES_OF_SIGHT_H
+#define CGAL_DF_L1_SKELETON_INTERNAL_LINES_OF_SIGHT_H
+
+#include <CGAL/DF_L1_skeleton/Voxel_grid.h>
+#include <CGAL/DF_L1_skeleton/internal/voxel_components.h>
+#include <CGAL/DF_L1_skeleton/internal/voxel_morphology.h>
+#include <CGAL/DF_L1_skeleton/internal/voxel_topology.h>
+#include <algorithm>
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace CGAL {
+namespace DF_L1 {
+namespace internal {
+
+// For every voxel v with `open[v]` (the others get 0), the set (bit d for the direction
+// of cell d of the 3x3x3 neighbourhood, see voxel_topology.h) of the 26 grid directions along which the straight line of voxels from v reaches an exterior voxel
+// (or leaves the grid) before a voxel of `blocker`, passing only `open` voxels. A
+// diagonal step is blocked when a voxel that it passes between is a blocker, so that a
+// line does not slip through a 26-connected shell.
+template <class Traits>
+std::vector<std::uint32_t> exterior_lines_of_sight(const Grid_geometry<Traits>& g, const std::vector<std::uint8_t>& labels,
+                                                  const std::vector<char>& open, const std::vector<char>& blocker)
+{
+  const std::uint8_t E = std::uint8_t(Voxel_label::EXTERIOR);
+  const int nx = g.dims[0], ny = g.dims[1], nz = g.dims[2];
+  const std::size_t n = labels.size();
+  std::vector<std::size_t> voxels;
+  for(std::size_t v = 0; v < n; ++v)
+    if(open[v])
+      voxels.push_back(v);
+  std::vector<std::uint32_t> count(n, 0);
+  std::vector<char> sees(n, 0); // along the current direction
+  for(int d = 0; d < 27; ++d)
+  {
+    if(d == 13)
+      continue;
+    const int dx = d % 3 - 1, dy = d / 3 % 3 - 1, dz = d / 9 - 1;
+    const long offset = dx + long(dy) * nx + long(dz) * nx * ny;
+    // The voxels a diagonal step passes between: the partial steps.
+    std::array<long, 6> between{};
+    int between_count = 0;
+    for(int s = 1; s < 7; ++s)
+    {
+      const int sx = (s & 1) ? dx : 0, sy = (s & 2) ? dy : 0, sz = (s & 4) ? dz : 0;
+      if((sx == 0 && sy == 0 && sz == 0) || (sx == dx && sy == dy && sz == dz))
+        continue;
+      const long o = sx + long(sy) * nx + long(sz) * nx * ny;
+      bool seen = false;
+      for(int b = 0; b < between_count; ++b)
+        seen = seen || between[std::size_t(b)] == o;
+      if(!seen)
+        between[std::size_t(between_count++)] = o;
+    }
+    // v + d before v: in decreasing index order when the step increases the index.
+    auto visit = [&](std::size_t v) {
+      const std::array<int, 3> c = g.coordinates(v);
+      const int a = c[0] + dx, b = c[1] + dy, e = c[2] + dz;
+      bool result;
+      if(a < 0 || b < 0 || e < 0 || a >= nx || b >= ny || e >= nz)
+        result = true;
+      else
+      {
+        const std::size_t w = std::size_t(long(v) + offset);
+        bool blocked = blocker[w] != 0;
+        for(int s = 0; s < between_count && !blocked; ++s)
+          blocked = blocker[std::size_t(long(v) + between[std::size_t(s)])] != 0;
+        result = !blocked && (labels[w] == E || (open[w] && sees[w]));
+      }
+      sees[v] = result;
+      if(result)
+        count[v] |= std::uint32_t(1) << d;
+    };
+    if(offset > 0)
+      for(std::size_t i = voxels.size(); i-- > 0;)
+        visit(voxels[i]);
+    else
+      for(std::size_t v : voxels)
+        visit(v);
+  }
+  return count;
+}
+
+// The interior voxels that see the exterior along at least `min_directions` of the 26
+// grid directions, among them `min_pairs` pairs of opposite ones, become exterior,
+// unless `keep` holds them or opening them would change the topology of the solid
+// (occupied and interior voxels). A voxel between two parts sees out on opposite sides;
+// one inside a part behind a hole of the scan sees out through the hole alone. The lines stop at
+// the occupied voxels dilated by `band` (voxels): between the samples of a sparse cloud
+// the occupied voxels leave gaps that a line would pass. Returns the number opened.
+template <class Traits>
+std::size_t open_lines_of_sight(const Grid_geometry<Traits>& g, std::vector<std::uint8_t>& labels,
+                                const std::vector<char>& keep, double band, int min_directions, int min_pairs)
+{
+  const std::uint8_t B = std::uint8_t(Voxel_label::BOUNDARY), I = std::uint8_t(Voxel_label::INTERIOR),
+                     O = std::uint8_t(Voxel_label::OUTLIER), E = std::uint8_t(Voxel_label::EXTERIOR);
+  const std::size_t n = labels.size();
+  std::vector<char> blocker(n), open(n);
+  for(std::size_t v = 0; v < n; ++v)
+    blocker[v] = labels[v] == B || labels[v] == O;
+  if(band >= 1)
+    blocker = dilate_by_ball(blocker, g.dims, double(float(band * band) + 1e-3f));
+  bool any = false;
+  for(std::size_t v = 0; v < n; ++v)
+  {
+    open[v] = labels[v] == I && !blocker[v];
+    any = any || open[v];
+  }
+  if(!any)
+    return 0;
+  const std::vector<std::uint32_t> seen = exterior_lines_of_sight(g, labels, open, blocker);
+  // per voxel: the directions that see out, and the pairs of opposite ones that both do
+  std::vector<std::uint8_t> count(n, 0);
+  for(std::size_t v = 0; v < n; ++v)
+  {
+    if(!seen[v])
+      continue;
+    int pairs = 0;
+    for(int d = 0; d < 13; ++d)
+      pairs += ((seen[v] >> d) & 1) && ((seen[v] >> (26 - d)) & 1);
+    count[v] = pairs >= min_pairs ? std::uint8_t(bit_count(seen[v])) : 0;
+  }
+  // Opened one at a time, most exposed first, and only while the solid (occupied and
+  // interior voxels) keeps its topology: a line through a hole of the scan may see out
+  // from inside a part, and opening there would pierce it.
+  std::vector<std::size_t> candidates;
+  for(std::size_t v = 0; v < n; ++v)
+    if(open[v] && !keep[v] && count[v] >= min_directions)
+      candidates.push_back(v);
+  std::stable_sort(candidates.begin(), candidates.end(),
+                   [&](std::size_t a, std::size_t b) { return count[a] > count[b]; });
+  const int nx = g.dims[0], ny = g.dims[1], nz = g.dims[2];
+  auto solid = [&](int i, int j, int k) {
+    if(i < 0 || j < 0 || k < 0 || i >= nx || j >= ny || k >= nz)
+      return false;
+    const std::uint8_t l = labels[(std::size_t(k) * ny + j) * nx + i];
+    return l == I || l == B || l == O;
+  };
+  // A voxel that would change the topology now may not once its neighbours are open:
+  // passes over the remaining candidates until none opens.
+  std::size_t opened = 0;
+  for(int pass = 0; pass < 100; ++pass)
+  {
+    std::size_t before = opened;
+    for(std::size_t& v : candidates)
+    {
+      if(v == std::size_t(-1))
+        continue;
+      const std::array<int, 3> c = g.coordinates(v);
+      Neighbourhood mask = 0;
+      for(int cell = 0; cell < 27; ++cell)
+        if(cell != 13 && solid(c[0] + cell % 3 - 1, c[1] + cell / 3 % 3 - 1, c[2] + cell / 9 - 1))
+          mask |= Neighbourhood(1) << cell;
+      if(is_simple(mask))
+      {
+        labels[v] = E;
+        v = std::size_t(-1);
+        ++opened;
+      }
+    }
+    if(opened == before)
+      break;
+  }
+  return opened;
+}
+
+} // namespace internal
+} // namespace DF_L1
+} // namespace CGAL
+
+#endif // CGAL_DF_L1_SKELETON_INTERNAL_LINES_OF_SIGHT_H
