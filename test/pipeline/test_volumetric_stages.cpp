@@ -453,6 +453,13 @@ std::pair<long, long> solid_topology(const DF::Grid_geometry<Kernel>& g, const s
   return {components, DF::internal::first_betti_number(g, solid, components, 0)};
 }
 
+// The boundary voxels dilated by one voxel (face neighbours): the shell that the lines
+// of sight stop at, as voxelize_point_set() makes it for a sampling spacing up to 2.
+std::vector<char> shell_of(const DF::Grid_geometry<Kernel>& g, const std::vector<std::uint8_t>& labels)
+{
+  return DF::internal::boundary_shell(g, labels, 1.0);
+}
+
 } // namespace
 
 TEST_CASE("voxels: interior voxels that see the exterior along many lines are opened, enclosed ones are not", "[voxels]")
@@ -484,7 +491,7 @@ TEST_CASE("voxels: interior voxels that see the exterior along many lines are op
       return i > 4 && i < 42 && std::abs(angle) < CGAL_PI / 12 ? L::INTERIOR : L::EXTERIOR;
     });
     std::vector<std::uint8_t> labels = before;
-    const auto opened = DF::internal::open_lines_of_sight(g, labels, keep, 1.0, 10, 2);
+    const auto opened = DF::internal::open_lines_of_sight(g, labels, keep, shell_of(g, labels), 10, 2);
     // The voxels next to the rods are within the band that closes the gaps between
     // samples; those farther than 2.5 voxels from both rods open.
     std::size_t far = 0, far_opened = 0;
@@ -519,7 +526,7 @@ TEST_CASE("voxels: interior voxels that see the exterior along many lines are op
   SECTION("a closed box keeps its inside")
   {
     std::vector<std::uint8_t> labels = box(-1);
-    CHECK(DF::internal::open_lines_of_sight(g, labels, keep, 1.0, 10, 2) == 0);
+    CHECK(DF::internal::open_lines_of_sight(g, labels, keep, shell_of(g, labels), 10, 2) == 0);
   }
   SECTION("a box with a hole over an edge is never pierced, and kept whole when opposite lines are asked for")
   {
@@ -527,14 +534,14 @@ TEST_CASE("voxels: interior voxels that see the exterior along many lines are op
     std::vector<std::uint8_t> labels = before;
     // Without the opposite pairs the lines through the hole open a dent; the topology
     // guard keeps the box one solid without a tunnel.
-    const std::size_t dent = DF::internal::open_lines_of_sight(g, labels, keep, 1.0, 10, 0);
+    const std::size_t dent = DF::internal::open_lines_of_sight(g, labels, keep, shell_of(g, labels), 10, 0);
     CHECK(dent > 0);
     CHECK(count(labels, L::INTERIOR) > 0.8 * count(before, L::INTERIOR));
     CHECK(solid_topology(g, labels) == solid_topology(g, before));
     // Only the voxels near the edge see out on two opposite sides (down through the wall
     // and up through the lid).
     labels = before;
-    const std::size_t paired = DF::internal::open_lines_of_sight(g, labels, keep, 1.0, 10, 2);
+    const std::size_t paired = DF::internal::open_lines_of_sight(g, labels, keep, shell_of(g, labels), 10, 2);
     INFO("opened without pairs " << dent << ", with two pairs " << paired);
     CHECK(2 * paired < dent);
     CHECK(solid_topology(g, labels) == solid_topology(g, before));
@@ -543,6 +550,6 @@ TEST_CASE("voxels: interior voxels that see the exterior along many lines are op
     for(std::size_t v = 0; v < g.size(); ++v)
       inside[v] = before[v] == std::uint8_t(L::INTERIOR);
     labels = before;
-    CHECK(DF::internal::open_lines_of_sight(g, labels, inside, 1.0, 10, 2) == 0);
+    CHECK(DF::internal::open_lines_of_sight(g, labels, inside, shell_of(g, labels), 10, 2) == 0);
   }
 }

@@ -321,20 +321,28 @@ std::vector<char> ball_centres(const Grid_geometry<Traits>& g, const std::vector
 // to 11 (hysteresis).
 constexpr std::uint8_t INSIDE_VOTES = 14, INSIDE_GROWTH_VOTES = 11;
 
+// The boundary voxels dilated by `band` voxels: a shell without the gaps that the
+// samples leave between them, which the rays of the parity vote and the lines of sight
+// cross.
+template <class Traits>
+std::vector<char> boundary_shell(const Grid_geometry<Traits>& g, const std::vector<std::uint8_t>& labels, double band)
+{
+  std::vector<char> boundary(labels.size());
+  for(std::size_t v = 0; v < labels.size(); ++v)
+    boundary[v] = labels[v] == std::uint8_t(Voxel_label::BOUNDARY);
+  return dilate_by_ball(boundary, g.dims, double(float(band * band) + 1e-3f));
+}
+
 // The voxels that a parity vote puts inside the shape, whatever the labels say (see
-// voxelize_point_set() for why). `band`: the radius (voxels) by which the boundary
-// voxels are dilated into the shell that the rays cross; `min_voxels`: the smallest
-// inside region kept.
+// voxelize_point_set() for why). `shell`: the boundary voxels dilated by `band` voxels
+// (boundary_shell()), the shell that the rays cross; `min_voxels`: the smallest inside
+// region kept.
 template <class ConcurrencyTag, class Traits>
 std::vector<char> voted_interior(const Grid_geometry<Traits>& g, const std::vector<std::uint8_t>& labels,
-                                 double band, double min_voxels)
+                                 const std::vector<char>& shell, double band, double min_voxels)
 {
-  const std::uint8_t B = std::uint8_t(Voxel_label::BOUNDARY), E = std::uint8_t(Voxel_label::EXTERIOR);
+  const std::uint8_t E = std::uint8_t(Voxel_label::EXTERIOR);
   const std::size_t n = labels.size();
-  std::vector<char> boundary(n);
-  for(std::size_t v = 0; v < n; ++v)
-    boundary[v] = labels[v] == B;
-  const std::vector<char> shell = dilate_by_ball(boundary, g.dims, double(float(band * band) + 1e-3f));
   // The 26 fixed directions vote in streaks along the grid axes and diagonals (a ray
   // through a hole changes the vote of a whole line of voxels); averaged over a 5x5x5
   // box of voxels off the shell, the inside regions get smooth borders, and no tunnels.
@@ -716,12 +724,15 @@ voxelize_point_set(const PointRange& points, const NamedParameters& np = paramet
     const double coarsest = std::pow(3.0, refinements);
     const double large = (std::max)(coarsest, 2 * h), small = (std::max)(coarsest / 2, h);
     const double small_ball_volume = 4.0 / 3.0 * 3.14159265358979 * small * small * small;
+    const double band = (std::max)(1.0, h / 2);
+    const std::vector<char> shell = internal::boundary_shell(g, labels, band);
     const std::vector<char> inside =
-      internal::voted_interior<ConcurrencyTag>(g, labels, (std::max)(1.0, h / 2), small_ball_volume);
+      internal::voted_interior<ConcurrencyTag>(g, labels, shell, band, small_ball_volume);
     internal::sweep_exterior_with_balls<ConcurrencyTag>(g, labels, inside, large, small, 3 * large);
-    // Crotches narrower than the small ball: the lines of sight through them.
+    // Crotches narrower than the small ball: the lines of sight through them, which stop
+    // at the same shell (the sweep leaves the boundary voxels as they were).
     if(open_crotches)
-      internal::open_lines_of_sight(g, labels, inside, (std::max)(1.0, h / 2), 10, 2);
+      internal::open_lines_of_sight(g, labels, inside, shell, 10, 2);
     result.levels.back() = internal::level_statistics(g, labels);
   }
   internal::crop(g, labels, 4);

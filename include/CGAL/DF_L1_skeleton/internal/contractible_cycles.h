@@ -180,23 +180,26 @@ std::size_t cut_contractible_cycles(Skeleton_graph<Traits>& g, const Grid_geomet
       const std::size_t k = cycle.size();
       if(junctions.size() >= 2)
       {
+        // Arc a runs from junction a to the next one, `steps` edges along the cycle.
+        auto steps_of = [&](std::size_t a) {
+          const std::size_t start = junctions[a], end = junctions[(a + 1) % junctions.size()];
+          return (end + k - start) % k == 0 ? k : (end + k - start) % k;
+        };
         double best = std::numeric_limits<double>::infinity();
-        std::size_t best_start = 0;
+        std::size_t best_arc = 0;
         for(std::size_t a = 0; a < junctions.size(); ++a)
         {
-          const std::size_t start = junctions[a], end = junctions[(a + 1) % junctions.size()];
-          const std::size_t steps = (end + k - start) % k == 0 ? k : (end + k - start) % k;
+          const std::size_t steps = steps_of(a);
           double sum = 0;
           for(std::size_t s = 0; s <= steps; ++s)
-            sum += CGAL::to_double(g[cycle[(start + s) % k]].radius);
+            sum += CGAL::to_double(g[cycle[(junctions[a] + s) % k]].radius);
           if(sum / double(steps + 1) < best)
           {
             best = sum / double(steps + 1);
-            best_start = a;
+            best_arc = a;
           }
         }
-        const std::size_t start = junctions[best_start], end = junctions[(best_start + 1) % junctions.size()];
-        const std::size_t steps = (end + k - start) % k == 0 ? k : (end + k - start) % k;
+        const std::size_t start = junctions[best_arc], steps = steps_of(best_arc);
         if(steps == 1)
           boost::remove_edge(cycle[start], cycle[(start + 1) % k], g);
         else

@@ -4,11 +4,10 @@
 #define CGAL_DF_L1_SKELETON_INTERNAL_LINES_OF_SIGHT_H
 
 #include <CGAL/DF_L1_skeleton/Voxel_grid.h>
-#include <CGAL/DF_L1_skeleton/internal/voxel_components.h>
-#include <CGAL/DF_L1_skeleton/internal/voxel_morphology.h>
+#include <CGAL/DF_L1_skeleton/internal/curve_thinning.h>
 #include <CGAL/DF_L1_skeleton/internal/voxel_topology.h>
-#include <algorithm>
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -18,9 +17,10 @@ namespace CGAL {
 namespace DF_L1 {
 namespace internal {
 
-// For every voxel v with `open[v]` (the others get 0), the set (bit d for the direction
-// of cell d of the 3x3x3 neighbourhood, see voxel_topology.h) of the 26 grid directions along which the straight line of voxels from v reaches an exterior voxel
-// (or leaves the grid) before a voxel of `blocker`, passing only `open` voxels. A
+// For every voxel v with `open[v]` (the others get 0), the set of the 26 grid directions
+// (bit d for the direction of cell d of the 3x3x3 neighbourhood, see voxel_topology.h)
+// along which the straight line of voxels from v reaches an exterior voxel (or leaves
+// the grid) before a voxel of `blocker`, passing only `open` voxels. A
 // diagonal step is blocked when a voxel that it passes between is a blocker, so that a
 // line does not slip through a 26-connected shell.
 template <class Traits>
@@ -89,22 +89,19 @@ std::vector<std::uint32_t> exterior_lines_of_sight(const Grid_geometry<Traits>& 
 // The interior voxels that see the exterior along at least `min_directions` of the 26
 // grid directions, among them `min_pairs` pairs of opposite ones, become exterior,
 // unless `keep` holds them or opening them would change the topology of the solid
-// (occupied and interior voxels). A voxel between two parts sees out on opposite sides;
-// one inside a part behind a hole of the scan sees out through the hole alone. The lines stop at
-// the occupied voxels dilated by `band` (voxels): between the samples of a sparse cloud
-// the occupied voxels leave gaps that a line would pass. Returns the number opened.
+// (boundary and interior voxels). A voxel between two parts sees out on opposite sides;
+// one inside a part behind a hole of the scan sees out through the hole alone. The lines
+// stop at the voxels of `blocker`: the boundary voxels dilated so that the gaps between
+// the samples of a sparse cloud are closed (boundary_shell() of voxelize_point_set.h).
+// No interior voxel may lie on the outer layer of the grid. Returns the number opened.
 template <class Traits>
 std::size_t open_lines_of_sight(const Grid_geometry<Traits>& g, std::vector<std::uint8_t>& labels,
-                                const std::vector<char>& keep, double band, int min_directions, int min_pairs)
+                                const std::vector<char>& keep, const std::vector<char>& blocker, int min_directions,
+                                int min_pairs)
 {
-  const std::uint8_t B = std::uint8_t(Voxel_label::BOUNDARY), I = std::uint8_t(Voxel_label::INTERIOR),
-                     O = std::uint8_t(Voxel_label::OUTLIER), E = std::uint8_t(Voxel_label::EXTERIOR);
+  const std::uint8_t I = std::uint8_t(Voxel_label::INTERIOR), E = std::uint8_t(Voxel_label::EXTERIOR);
   const std::size_t n = labels.size();
-  std::vector<char> blocker(n), open(n);
-  for(std::size_t v = 0; v < n; ++v)
-    blocker[v] = labels[v] == B || labels[v] == O;
-  if(band >= 1)
-    blocker = dilate_by_ball(blocker, g.dims, double(float(band * band) + 1e-3f));
+  std::vector<char> open(n);
   bool any = false;
   for(std::size_t v = 0; v < n; ++v)
   {
@@ -125,22 +122,19 @@ std::size_t open_lines_of_sight(const Grid_geometry<Traits>& g, std::vector<std:
       pairs += ((seen[v] >> d) & 1) && ((seen[v] >> (26 - d)) & 1);
     count[v] = pairs >= min_pairs ? std::uint8_t(bit_count(seen[v])) : 0;
   }
-  // Opened one at a time, most exposed first, and only while the solid (occupied and
-  // interior voxels) keeps its topology: a line through a hole of the scan may see out
-  // from inside a part, and opening there would pierce it.
+  // Opened one at a time, most exposed first, and only while the solid keeps its
+  // topology: a line through a hole of the scan may see out from inside a part, and
+  // opening there would pierce it.
   std::vector<std::size_t> candidates;
   for(std::size_t v = 0; v < n; ++v)
     if(open[v] && !keep[v] && count[v] >= min_directions)
       candidates.push_back(v);
   std::stable_sort(candidates.begin(), candidates.end(),
                    [&](std::size_t a, std::size_t b) { return count[a] > count[b]; });
-  const int nx = g.dims[0], ny = g.dims[1], nz = g.dims[2];
-  auto solid = [&](int i, int j, int k) {
-    if(i < 0 || j < 0 || k < 0 || i >= nx || j >= ny || k >= nz)
-      return false;
-    const std::uint8_t l = labels[(std::size_t(k) * ny + j) * nx + i];
-    return l == I || l == B || l == O;
-  };
+  std::vector<std::uint8_t> solid(n);
+  for(std::size_t v = 0; v < n; ++v)
+    solid[v] = labels[v] != E;
+  const std::array<std::ptrdiff_t, 27> offsets = neighbourhood_offsets(g);
   // A voxel that would change the topology now may not once its neighbours are open:
   // passes over the remaining candidates until none opens.
   std::size_t opened = 0;
@@ -149,19 +143,12 @@ std::size_t open_lines_of_sight(const Grid_geometry<Traits>& g, std::vector<std:
     std::size_t before = opened;
     for(std::size_t& v : candidates)
     {
-      if(v == std::size_t(-1))
+      if(v == std::size_t(-1) || !is_simple(neighbourhood_in(solid, 1, v, offsets)))
         continue;
-      const std::array<int, 3> c = g.coordinates(v);
-      Neighbourhood mask = 0;
-      for(int cell = 0; cell < 27; ++cell)
-        if(cell != 13 && solid(c[0] + cell % 3 - 1, c[1] + cell / 3 % 3 - 1, c[2] + cell / 9 - 1))
-          mask |= Neighbourhood(1) << cell;
-      if(is_simple(mask))
-      {
-        labels[v] = E;
-        v = std::size_t(-1);
-        ++opened;
-      }
+      labels[v] = E;
+      solid[v] = 0;
+      v = std::size_t(-1);
+      ++opened;
     }
     if(opened == before)
       break;
