@@ -260,10 +260,10 @@ TEST_CASE("voxel topology: simple voxels and loops of voxel sets", "[initial][to
   CHECK(DF::skeleton_statistics(DF::internal::voxel_curve_graph<Kernel>(grid, line)).cycles == 0);
 }
 
-TEST_CASE("initial skeleton: a cycle that bounds a disk in the solid is cut, one around a hole is kept", "[initial]")
+TEST_CASE("initial skeleton: a cycle that bounds a disk in the solid closed by a voxel is cut, one around a hole is kept", "[initial]")
 {
   // A 30 x 30 x 8 plate of interior voxels inside a boundary layer; in the second case
-  // with a square hole of 6 x 6 voxels through its middle.
+  // with a square hole through its middle, 2, 4 or 8 voxels wide.
   DF::Grid_geometry<Kernel> grid;
   grid.dims = {{34, 34, 12}};
   auto labels_with_hole = [&](int hole) {
@@ -316,6 +316,18 @@ TEST_CASE("initial skeleton: a cycle that bounds a disk in the solid is cut, one
     const DF::Skeleton_statistics s = DF::skeleton_statistics(g);
     CHECK(s.cycles == 0);
     CHECK(s.components == 1);
+  }
+  SECTION("plate with a hole two voxels wide, below the resolution: the loop goes")
+  {
+    DF::Skeleton_graph<Kernel> g = loop_graph();
+    CHECK(DF::internal::cut_contractible_cycles(g, grid, labels_with_hole(1)) == 1);
+    CHECK(DF::skeleton_statistics(g).cycles == 0);
+  }
+  SECTION("plate with a hole four voxels wide: the loop around it stays")
+  {
+    DF::Skeleton_graph<Kernel> g = loop_graph();
+    CHECK(DF::internal::cut_contractible_cycles(g, grid, labels_with_hole(2)) == 0);
+    CHECK(DF::skeleton_statistics(g).cycles == 1);
   }
   SECTION("plate with a hole: the loop around it stays")
   {

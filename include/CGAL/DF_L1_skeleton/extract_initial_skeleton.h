@@ -556,11 +556,12 @@ void prune_spurs(Skeleton_graph<Traits>& g, double ratio, double voxel_size)
 ///   balls are a voxel or two wide, and more slack would swallow the tip. In a thin part,
 ///   the local radius is the distance to the nearest unoccupied voxel less half a voxel;
 /// - a cycle of the graph that bounds a disk inside the solid of occupied and interior
-///   voxels (the cone from its centroid over its edges, sampled every 0.4 voxel, meets
-///   no exterior or outlier voxel) encloses no hole of the shape: the thinned solid had a
-///   tunnel there that boundary voxels plug (noise that went through a plate). Such a
+///   voxels closed by one voxel (the cone from its centroid over its edges, sampled every
+///   0.4 voxel, meets no exterior or outlier voxel farther than sqrt(3) voxels from the
+///   solid) encloses no hole of the shape that the grid resolves: a tunnel of the noisy
+///   surface, or a gap of one or two voxels between parts that almost touch. Such a
 ///   cycle loses its thinner arc between two junctions, and the spurs are pruned again.
-///   A handle's loop cannot bound a disk inside the solid, so it stays whatever the disk;
+///   A handle's hole is wider than that, so its loop stays;
 /// - with `occupied_depth` (our addition, for smoothed noisy clouds), the depth that the
 ///   ridge test, the thinning, the end test and the radii read is not the distance field
 ///   but the distance to the nearest unoccupied voxel less one, and the solid also takes

@@ -5,6 +5,9 @@
 
 #include <CGAL/DF_L1_skeleton/Skeleton_graph.h>
 #include <CGAL/DF_L1_skeleton/Voxel_grid.h>
+#include <CGAL/DF_L1_skeleton/internal/euclidean_distance_transform.h>
+
+#include <CGAL/tags.h>
 
 #include <CGAL/Iterator_range.h>
 
@@ -24,13 +27,15 @@ namespace CGAL {
 namespace DF_L1 {
 namespace internal {
 
-// Whether the cone from the centroid of `cycle` over its edges (a disk that the cycle
-// bounds) lies in the solid: no point of it, sampled every `step` voxels, falls in an
-// exterior or outlier voxel or off the grid. Then the cycle bounds a disk in the solid
-// and encloses no hole of the shape.
+// The largest clearance of the cone from the centroid of `cycle` over its edges (a disk
+// that the cycle bounds), sampled every `step` voxels: the distance, in voxels, from its
+// samples that fall in exterior or outlier voxels to the nearest voxel of the solid, read
+// from `clearance` (squared, voxel units); infinity off the grid. 0 when the disk lies in
+// the solid: the cycle then encloses no hole of the shape.
 template <class Traits>
-bool spans_solid_disk(const Grid_geometry<Traits>& grid, const std::vector<Voxel_label>& labels,
-                      const std::vector<std::array<double, 3>>& cycle, double step)
+double disk_clearance(const Grid_geometry<Traits>& grid, const std::vector<Voxel_label>& labels,
+                      const std::vector<float>& clearance, const std::vector<std::array<double, 3>>& cycle,
+                      double step)
 {
   std::array<double, 3> c{{0, 0, 0}};
   for(const auto& p : cycle)
@@ -39,14 +44,21 @@ bool spans_solid_disk(const Grid_geometry<Traits>& grid, const std::vector<Voxel
   const double size = CGAL::to_double(grid.voxel_size);
   const double o[3] = {CGAL::to_double(grid.origin.x()), CGAL::to_double(grid.origin.y()),
                        CGAL::to_double(grid.origin.z())};
-  auto solid = [&](const std::array<double, 3>& p) {
+  double widest = 0;
+  auto visit = [&](const std::array<double, 3>& p) {
     int ijk[3];
     for(int d = 0; d < 3; ++d)
       ijk[d] = int(std::floor((p[d] - o[d]) / size));
     if(!grid.contains(ijk[0], ijk[1], ijk[2]))
-      return false;
-    const Voxel_label l = labels[grid.index(ijk[0], ijk[1], ijk[2])];
-    return l == Voxel_label::INTERIOR || l == Voxel_label::BOUNDARY;
+    {
+      widest = std::numeric_limits<double>::infinity();
+      return;
+    }
+    const std::size_t v = grid.index(ijk[0], ijk[1], ijk[2]);
+    const Voxel_label l = labels[v];
+    if(l != Voxel_label::INTERIOR && l != Voxel_label::BOUNDARY)
+      widest = (std::max)(widest, clearance.empty() ? std::numeric_limits<double>::infinity()
+                                                    : std::sqrt(double(clearance[v])));
   };
   for(std::size_t e = 0; e < cycle.size(); ++e)
   {
@@ -64,23 +76,29 @@ bool spans_solid_disk(const Grid_geometry<Traits>& grid, const std::vector<Voxel
         std::array<double, 3> p;
         for(int d = 0; d < 3; ++d)
           p[d] = c[d] + s * (a[d] - c[d]) + t * (b[d] - c[d]);
-        if(!solid(p))
-          return false;
+        visit(p);
+        if(widest == std::numeric_limits<double>::infinity())
+          return widest;
       }
   }
-  return true;
+  return widest;
 }
 
 // Removes the cycles of `g` that bound a disk inside the solid of `labels` (occupied
-// and interior voxels): the thinned solid had a tunnel there that the boundary voxels
-// plug (a pit of a noisy surface that went through a plate, a hole between the samples
-// of a sparse part), not a hole of the shape. For each edge off a spanning tree, the
-// shortest cycle through it is tested; a cycle through two junctions or more loses its
-// arc of smallest mean radius (the thinner of two parallel paths), one with a single
-// junction the edge opposite it. Returns the number of cuts.
+// and interior voxels) closed by `closing_radius` voxels: the disk may cross exterior
+// voxels, but none farther than that from the solid. Such a cycle goes around a plugged
+// tunnel (a pit of a noisy surface that went through a plate, a hole between the samples
+// of a sparse part) or a hole narrower than the grid resolves (one or two voxels between
+// the twigs of a crown, the ends of a part that almost closes), not a hole of the shape.
+// The default, sqrt(3), is one step of the 26-neighbourhood: the holes that a closing by
+// one voxel fills. For each edge off a spanning tree, the shortest cycle through it is
+// tested; a cycle through two junctions or more loses its arc of smallest mean radius
+// (the thinner of two parallel paths), one with a single junction the edge opposite it.
+// Returns the number of cuts.
 template <class Traits>
 std::size_t cut_contractible_cycles(Skeleton_graph<Traits>& g, const Grid_geometry<Traits>& grid,
-                                    const std::vector<Voxel_label>& labels, std::size_t max_cuts = 1000)
+                                    const std::vector<Voxel_label>& labels, double closing_radius = 1.7321,
+                                    std::size_t max_cuts = 1000)
 {
   std::size_t cuts = 0;
   auto xyz = [&](std::size_t v) {
@@ -94,6 +112,7 @@ std::size_t cut_contractible_cycles(Skeleton_graph<Traits>& g, const Grid_geomet
   // Edges already tested and kept, as (min, max) vertex pairs; reset after a cut, whose
   // vertex removal renumbers the vertices.
   std::vector<std::pair<std::size_t, std::size_t>> kept;
+  std::vector<float> clearance; // squared distance to the solid, computed at the first cycle
   while(cuts < max_cuts)
   {
     const std::size_t n = boost::num_vertices(g);
@@ -167,7 +186,12 @@ std::size_t cut_contractible_cycles(Skeleton_graph<Traits>& g, const Grid_geomet
       std::vector<std::array<double, 3>> points;
       for(std::size_t v : cycle)
         points.push_back(xyz(v));
-      if(cycle.size() < 3 || !spans_solid_disk(grid, labels, points, 0.4))
+      if(clearance.empty())
+        clearance = squared_distance_to_sites<Sequential_tag>(
+          grid.dims, [&](std::size_t v) { return labels[v] == Voxel_label::INTERIOR || labels[v] == Voxel_label::BOUNDARY; },
+          float((closing_radius + 1) * (closing_radius + 1)));
+      const double widest = cycle.size() < 3 ? 0 : disk_clearance(grid, labels, clearance, points, 0.4);
+      if(cycle.size() < 3 || widest > closing_radius)
       {
         kept.push_back(e);
         continue;
