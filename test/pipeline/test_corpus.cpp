@@ -178,12 +178,12 @@ TEST_CASE("corpus: a sample of families and degradations keeps its quality", "[c
     }
   }
   std::cout << "corpus sample: " << passes << "/" << cases << " designed topology\n";
-  CHECK(passes >= 14);
+  CHECK(passes >= 19);
   CHECK(coverage / cases >= 0.80);
   CHECK(outside / cases <= 0.03);
 }
 
-TEST_CASE("corpus: a ring whose ends come 1 to 2 voxels close is cut open, closed rings keep their loops", "[corpus]")
+TEST_CASE("corpus: a ring whose ends come 1 to 2 voxels close is cut open, legs that touch are parted, closed rings keep their loops", "[corpus]")
 {
   // The voxels of the two ends of the C touch: the pocket between them is taken for
   // interior and the initial skeleton closes the ring. The points show the gap.
@@ -204,6 +204,10 @@ TEST_CASE("corpus: a ring whose ends come 1 to 2 voxels close is cut open, close
     CHECK(run("close_parts", index, "clean").cycles == 0);
     CHECK(run("close_parts", index, "outliers_3").cycles == 0);
   }
+  // Two legs side by side under a body: where their voxels touch, the walls that face
+  // each other across the gap are denser than the gap is wide.
+  for(int index : {0, 8})
+    CHECK(run("close_parts", index, "outliers_3").cycles == 0);
   for(int index = 0; index < 5; ++index) // rings, handles, frames and ladders, 1 to 5 cycles
     CHECK(run("loops", index, "clean").cycles >= 1);
 }

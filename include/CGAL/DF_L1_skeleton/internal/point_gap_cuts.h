@@ -82,8 +82,9 @@ std::vector<char> on_cycle_vertices(const Graph& g)
 // voxels could not separate (parts 1 or 2 voxels apart: their boundary voxels touch, and
 // the pocket between them is taken for interior). Such a curve runs from one surface
 // straight into the other: the input points near its line, projected on it, leave an
-// empty interval near the vertex, wider than the sampling spacing, and the points that
-// bound it lie closer to the line than the local radius (the two surfaces cross it).
+// empty interval near the vertex, wider than the sampling spacing or bounded by dense
+// surfaces on both sides, and the points that bound it lie closer to the line than the
+// local radius (the two surfaces cross it).
 // Inside a part, however thin, the surface surrounds the curve: its projection has no
 // such interval, and a gap in its sampling is bounded by the wall, a radius away. A
 // candidate is a vertex of degree 2 on a cycle whose local radius is at most 2.5 voxels
@@ -97,6 +98,7 @@ std::size_t cut_point_gaps(Skeleton_graph<Traits>& g, const std::vector<std::arr
   typedef std::array<double, 3> A;
   const double reach_along = 5 * voxel, centre_window = 2 * voxel, max_radius = 2.5 * voxel, band = voxel;
   const double min_width = (std::max)(0.6 * voxel, spacing);
+  const std::size_t dense_wall_points = 6;
   std::vector<std::pair<double, std::size_t>> nearest;
   auto local_spacing = [&](std::size_t i) { // distance to the 6th nearest neighbour
     grid.k_nearest(xyz[i], 7, [](std::size_t) { return true; }, nearest);
@@ -167,7 +169,7 @@ std::size_t cut_point_gaps(Skeleton_graph<Traits>& g, const std::vector<std::arr
           widest = along[k + 1].abscissa - along[k].abscissa;
           gap = k;
         }
-      if(widest < min_width)
+      if(widest < 0.6 * voxel)
         continue;
       // A curve that leaves a part crosses its surface: the points bounding the gap lie
       // near the line. Along a thin part, a sampling gap is bounded by the wall, as far
@@ -178,10 +180,23 @@ std::size_t cut_point_gaps(Skeleton_graph<Traits>& g, const std::vector<std::arr
       for(std::size_t k = gap + 2; k < along.size() && along[k].abscissa <= along[gap + 1].abscissa + band; ++k)
         above_offset2 = (std::min)(above_offset2, along[k].offset2);
       const double offset = std::sqrt((std::max)({0.0, below_offset2, above_offset2}));
-      // wider than the sampling spacing at both of its ends: a sparse region of an uneven
-      // scan, or an isolated outlier, leaves wide intervals that are not gaps
-      if(offset < CGAL::to_double(g[v].radius) && widest >= local_spacing(along[gap].point) &&
-         widest >= local_spacing(along[gap + 1].point))
+      // The interval is a gap when it is wider than the sampling spacing at both of its
+      // ends (a sparse region of an uneven scan, or an isolated outlier, leaves wide
+      // intervals that are not gaps), or when the surfaces that bound it are dense:
+      // 6 points or more within its width on either side, and nearer the line (the
+      // surfaces face each other across it). A gap of a voxel between two parts is
+      // narrower than the spacing of a cloud of 20,000 points, and the 6th neighbour
+      // misses it; a sampling gap along a thin tube is bounded by sparse walls.
+      std::size_t below = 0, above = 0;
+      for(std::size_t k = gap + 1; k-- > 0 && along[k].abscissa >= along[gap].abscissa - widest;)
+        ++below;
+      for(std::size_t k = gap + 1; k < along.size() && along[k].abscissa <= along[gap + 1].abscissa + widest; ++k)
+        ++above;
+      const double r = CGAL::to_double(g[v].radius);
+      const bool dense_walls = (std::min)(below, above) >= dense_wall_points && offset < 0.7 * (std::max)(r, voxel);
+      const bool beyond_spacing = widest >= min_width && offset < r && widest >= local_spacing(along[gap].point) &&
+                                  widest >= local_spacing(along[gap + 1].point);
+      if(dense_walls || beyond_spacing)
         candidates.emplace_back(-widest, v);
     }
   }
