@@ -152,8 +152,13 @@ public:
   /// Estimates the surface noise of the kept points (`estimate_surface_noise()`) and,
   /// as the `denoising` parameter says, smooths them (`denoise_point_set()`): by default
   /// when the noise exceeds a fifth of the finest voxel size (measured: at most 0.09
-  /// voxel on clean, sparse, holed or uneven samples, at least 0.40 with 1 % noise). The later stages use the
-  /// smoothed positions; the input points, their indices and the outlier flags stay.
+  /// voxel on clean, sparse, holed or uneven samples, at least 0.40 with 1 % noise) and
+  /// the residual of the local fits grows less than 3 times from 10 to 40 neighbours
+  /// (`residual_growth()`): noise is the same at both scales (a growth of 2 to 2.7 on the
+  /// noisy scans and samples we measured), while the twigs of a LiDAR crown or a sparse
+  /// sample of thin limbs look noisy only to neighbourhoods wider than they are (3.3 to
+  /// 6), and smoothing would erase them. The later stages use the smoothed positions;
+  /// the input points, their indices and the outlier flags stay.
   void denoise()
   {
     if(denoise_checked_)
@@ -169,8 +174,10 @@ public:
     surface_noise_ = DF_L1::internal::surface_noise<ConcurrencyTag>(fitter);
     const double finest_voxel = DF_L1::internal::longest_side(
       CGAL::bbox_3(points_.begin(), points_.end())) / voxel_resolution_;
+    residual_growth_ = DF_L1::internal::residual_growth<ConcurrencyTag>(fitter);
     denoised_ = denoising_ == DF_L1::Denoising::ALWAYS ||
-                (denoising_ == DF_L1::Denoising::AUTOMATIC && surface_noise_ > 0.2 * finest_voxel);
+                (denoising_ == DF_L1::Denoising::AUTOMATIC && surface_noise_ > 0.2 * finest_voxel &&
+                 residual_growth_ < 3);
     if(denoised_)
       kept_points_ = DF_L1::internal::smoothed_points<ConcurrencyTag>(fitter, kept_points_, denoising_neighbors_);
     denoise_checked_ = true;
@@ -315,6 +322,9 @@ public:
   std::size_t number_of_sparse_outliers() { flag_outliers(); return sparse_outlier_count_; }
   /// the estimated noise of the surface, input units (`estimate_surface_noise()`)
   double surface_noise() { denoise(); return surface_noise_; }
+  /// how the noise estimate grows from 10 to 40 neighbours per fit (0 when either is
+  /// 0); the points are smoothed automatically only below 3 (see `denoise()`)
+  double residual_growth() { denoise(); return residual_growth_; }
   /// whether the points were smoothed before voxelization
   bool denoised() { denoise(); return denoised_; }
   /// the points that are not scattered outliers, in input order, at the positions the
@@ -482,7 +492,7 @@ private:
   std::vector<bool> sparse_outliers_, outliers_;
   std::size_t sparse_outlier_count_ = 0, outlier_count_ = 0;
   bool denoise_checked_ = false, denoised_ = false;
-  double surface_noise_ = 0;
+  double surface_noise_ = 0, residual_growth_ = 0;
   std::vector<Point> kept_points_; // the points that are not scattered outliers, smoothed when denoised
   bool upsampled_ = false;
   std::vector<Point> added_points_;

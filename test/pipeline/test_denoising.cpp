@@ -1,4 +1,5 @@
 // Stage 0b: the surface-noise estimate and the smoothing onto local quadrics.
+#include "support/shape_corpus.h"
 #include "support/synthetic_shapes.h"
 
 #include <CGAL/DF_L1_skeleton.h>
@@ -128,4 +129,24 @@ TEST_CASE("denoising: the class smooths only noisy clouds by default, as told ot
   CHECK_THROWS_AS(DF::denoise_point_set(clean.points, CGAL::parameters::denoising_neighbors(300)), DF::Invalid_input);
   CHECK_THROWS_AS(DF::estimate_surface_noise(std::vector<Point_3>{Point_3(0, 0, NAN)}), DF::Invalid_input);
   CHECK(DF::estimate_surface_noise(std::vector<Point_3>(3, Point_3(1, 2, 3))) == 0);
+}
+
+TEST_CASE("denoising: thin parts sampled sparsely are not taken for noise", "[denoising]")
+{
+  // 2,000 points on a tree of 2 to 5 levels: fits to 16 neighbours span whole twigs
+  // and leave residuals above a fifth of a voxel, but they grow with the neighbourhood
+  // (the twigs' curvature), where noise would not; a noisy surface keeps its smoothing.
+  const Shape tree = corpus_shape("trees", 14);
+  const Degradation sparse = corpus_degradation("sparse_2000");
+  const Sample thin = make_sample(tree, sparse.variant, 20000, 1014, sparse.options);
+  CGAL::DF_L1_skeletonization<Kernel> on_thin(thin.points);
+  CHECK(on_thin.surface_noise() > 0.2 * finest_voxel(thin.points));
+  CHECK(on_thin.residual_growth() >= 3);
+  CHECK_FALSE(on_thin.denoised());
+
+  const Sample noisy = sample_of("y_junction", Variant::noise);
+  CGAL::DF_L1_skeletonization<Kernel> on_noisy(noisy.points);
+  CHECK(on_noisy.residual_growth() > 1);
+  CHECK(on_noisy.residual_growth() < 3);
+  CHECK(on_noisy.denoised());
 }

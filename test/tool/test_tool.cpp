@@ -471,6 +471,7 @@ TEST_CASE("tool: --denoise smooths noisy clouds by default and as told", "[tool]
     CHECK(tree.get<int>("parameters.denoising_neighbors") == 20);
     CHECK(tree.get<bool>("counts.denoised") == c.denoised);
     CHECK(tree.get<double>("counts.surface_noise") >= 0);
+    CHECK(tree.get<double>("counts.residual_growth") >= 0);
     CHECK(tree.get<double>("seconds.denoising") >= 0);
   }
   for(const std::string bad : {"--denoise yes", "--denoise", "--denoising-neighbors 5", "--denoising-neighbors 257"})

@@ -160,11 +160,11 @@ std::vector<typename boost::property_traits<PointMap>::value_type> copy_points(c
   return xyz;
 }
 
-// The noise estimate of estimate_surface_noise(), from a fitter of the points.
+// The noise estimate of estimate_surface_noise(), from a fitter of the points: the
+// median residual of the fits to the k nearest neighbours.
 template <class ConcurrencyTag, class Traits>
-double surface_noise(const Local_quadric_fitter<Traits>& fitter)
+double surface_noise(const Local_quadric_fitter<Traits>& fitter, unsigned int k = 16)
 {
-  const unsigned int k = 16;
   const std::size_t size = fitter.size();
   if(size < k)
     return 0;
@@ -180,6 +180,18 @@ double surface_noise(const Local_quadric_fitter<Traits>& fitter)
     return 0;
   std::nth_element(residual.begin(), residual.begin() + residual.size() / 2, residual.end());
   return residual[residual.size() / 2];
+}
+
+// How the residual of the fits grows from 10 to 40 neighbours: about 2 on a noisy
+// surface (the noise is the same at both scales; a fit to fewer points follows more of
+// it), 3.3 and more where the neighbourhoods span parts thinner than themselves (the
+// twigs of a LiDAR crown, a sparse sample of thin limbs), whose residual is the parts'
+// curvature and thickness, not noise. 0 when either residual is 0.
+template <class ConcurrencyTag, class Traits>
+double residual_growth(const Local_quadric_fitter<Traits>& fitter)
+{
+  const double fine = surface_noise<ConcurrencyTag>(fitter, 10), coarse = surface_noise<ConcurrencyTag>(fitter, 40);
+  return fine > 0 && coarse > 0 ? coarse / fine : 0;
 }
 
 // The points smoothed as denoise_point_set() does, from a fitter of these points.
