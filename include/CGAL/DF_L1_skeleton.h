@@ -174,10 +174,9 @@ public:
     surface_noise_ = DF_L1::internal::surface_noise<ConcurrencyTag>(fitter);
     const double finest_voxel = DF_L1::internal::longest_side(
       CGAL::bbox_3(points_.begin(), points_.end())) / voxel_resolution_;
-    residual_growth_ = DF_L1::internal::residual_growth<ConcurrencyTag>(fitter);
-    denoised_ = denoising_ == DF_L1::Denoising::ALWAYS ||
-                (denoising_ == DF_L1::Denoising::AUTOMATIC && surface_noise_ > 0.2 * finest_voxel &&
-                 residual_growth_ < 3);
+    const bool noisy = denoising_ == DF_L1::Denoising::AUTOMATIC && surface_noise_ > 0.2 * finest_voxel;
+    residual_growth_ = noisy ? DF_L1::internal::residual_growth<ConcurrencyTag>(fitter) : 0.0;
+    denoised_ = denoising_ == DF_L1::Denoising::ALWAYS || (noisy && residual_growth_ < 3);
     if(denoised_)
       kept_points_ = DF_L1::internal::smoothed_points<ConcurrencyTag>(fitter, kept_points_, denoising_neighbors_);
     denoise_checked_ = true;
@@ -322,8 +321,9 @@ public:
   std::size_t number_of_sparse_outliers() { flag_outliers(); return sparse_outlier_count_; }
   /// the estimated noise of the surface, input units (`estimate_surface_noise()`)
   double surface_noise() { denoise(); return surface_noise_; }
-  /// how the noise estimate grows from 10 to 40 neighbours per fit (0 when either is
-  /// 0); the points are smoothed automatically only below 3 (see `denoise()`)
+  /// how the noise estimate grows from 10 to 40 neighbours per fit; the points are
+  /// smoothed automatically only below 3 (see `denoise()`). Measured only when the
+  /// smoothing is automatic and the noise estimate exceeds its threshold; 0 otherwise.
   double residual_growth() { denoise(); return residual_growth_; }
   /// whether the points were smoothed before voxelization
   bool denoised() { denoise(); return denoised_; }
