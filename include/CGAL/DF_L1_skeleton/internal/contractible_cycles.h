@@ -24,14 +24,32 @@ namespace CGAL {
 namespace DF_L1 {
 namespace internal {
 
+// The voxel offsets within `radius` voxels (centre to centre), nearest first.
+inline std::vector<std::array<int, 3>> offsets_within(double radius)
+{
+  std::vector<std::array<int, 3>> offsets;
+  const int reach = int(std::floor(radius));
+  for(int k = -reach; k <= reach; ++k)
+    for(int j = -reach; j <= reach; ++j)
+      for(int i = -reach; i <= reach; ++i)
+        if(i * i + j * j + k * k <= radius * radius)
+          offsets.push_back({{i, j, k}});
+  auto norm2 = [](const std::array<int, 3>& x) { return x[0] * x[0] + x[1] * x[1] + x[2] * x[2]; };
+  std::stable_sort(offsets.begin(), offsets.end(),
+                   [&](const std::array<int, 3>& x, const std::array<int, 3>& y) { return norm2(x) < norm2(y); });
+  return offsets;
+}
+
 // Whether the cone from the centroid of `cycle` over its edges (a disk that the cycle
 // bounds), sampled every `step` voxels, lies in the solid (occupied and interior voxels)
-// closed by `closing_radius` voxels: each sample that falls in an exterior or outlier
-// voxel has a voxel of the solid within that distance (centre to centre). False when a
-// sample leaves the grid.
+// closed by the `closing` offsets (`offsets_within()` the closing radius): each sample
+// that falls in an exterior or outlier voxel has a voxel of the solid at one of them. A
+// local search costs less than a distance transform of the grid, which took a third of
+// the initial skeleton's time on a torus at V = 100. False when a sample leaves the grid.
 template <class Traits>
 bool spans_closed_disk(const Grid_geometry<Traits>& grid, const std::vector<Voxel_label>& labels,
-                       const std::vector<std::array<double, 3>>& cycle, double step, double closing_radius)
+                       const std::vector<std::array<double, 3>>& cycle, double step,
+                       const std::vector<std::array<int, 3>>& closing)
 {
   std::array<double, 3> c{{0, 0, 0}};
   for(const auto& p : cycle)
@@ -40,19 +58,6 @@ bool spans_closed_disk(const Grid_geometry<Traits>& grid, const std::vector<Voxe
   const double size = CGAL::to_double(grid.voxel_size);
   const double o[3] = {CGAL::to_double(grid.origin.x()), CGAL::to_double(grid.origin.y()),
                        CGAL::to_double(grid.origin.z())};
-  // The offsets within the closing radius, nearest first: a local search costs less
-  // than a distance transform of the grid, which took a third of the initial
-  // skeleton's time on a torus at V = 100.
-  std::vector<std::array<int, 3>> offsets;
-  const int reach = int(std::floor(closing_radius));
-  for(int k = -reach; k <= reach; ++k)
-    for(int j = -reach; j <= reach; ++j)
-      for(int i = -reach; i <= reach; ++i)
-        if(i * i + j * j + k * k <= closing_radius * closing_radius)
-          offsets.push_back({{i, j, k}});
-  auto norm2 = [](const std::array<int, 3>& x) { return x[0] * x[0] + x[1] * x[1] + x[2] * x[2]; };
-  std::stable_sort(offsets.begin(), offsets.end(),
-                   [&](const std::array<int, 3>& x, const std::array<int, 3>& y) { return norm2(x) < norm2(y); });
   auto solid = [&](int i, int j, int k) {
     if(!grid.contains(i, j, k))
       return false;
@@ -65,7 +70,7 @@ bool spans_closed_disk(const Grid_geometry<Traits>& grid, const std::vector<Voxe
       ijk[d] = int(std::floor((p[d] - o[d]) / size));
     if(!grid.contains(ijk[0], ijk[1], ijk[2]))
       return false;
-    for(const auto& off : offsets)
+    for(const auto& off : closing)
       if(solid(ijk[0] + off[0], ijk[1] + off[1], ijk[2] + off[2]))
         return true;
     return false;
@@ -121,6 +126,7 @@ std::size_t cut_contractible_cycles(Skeleton_graph<Traits>& g, const Grid_geomet
   // Edges already tested and kept, as (min, max) vertex pairs; reset after a cut, whose
   // vertex removal renumbers the vertices.
   std::vector<std::pair<std::size_t, std::size_t>> kept;
+  const std::vector<std::array<int, 3>> closing_offsets = offsets_within(closing_radius);
   while(cuts < max_cuts)
   {
     const std::size_t n = boost::num_vertices(g);
@@ -194,7 +200,7 @@ std::size_t cut_contractible_cycles(Skeleton_graph<Traits>& g, const Grid_geomet
       std::vector<std::array<double, 3>> points;
       for(std::size_t v : cycle)
         points.push_back(xyz(v));
-      if(cycle.size() < 3 || !spans_closed_disk(grid, labels, points, 0.4, closing_radius))
+      if(cycle.size() < 3 || !spans_closed_disk(grid, labels, points, 0.4, closing_offsets))
       {
         kept.push_back(e);
         continue;

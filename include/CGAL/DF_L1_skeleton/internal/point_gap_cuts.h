@@ -97,7 +97,7 @@ std::size_t cut_point_gaps(Skeleton_graph<Traits>& g, const std::vector<std::arr
 {
   typedef std::array<double, 3> A;
   const double reach_along = 5 * voxel, centre_window = 2 * voxel, max_radius = 2.5 * voxel, band = voxel;
-  const double min_width = (std::max)(0.6 * voxel, spacing);
+  const double min_gap = 0.6 * voxel, min_width = (std::max)(min_gap, spacing);
   const std::size_t dense_wall_points = 6;
   std::vector<std::pair<double, std::size_t>> nearest;
   auto local_spacing = [&](std::size_t i) { // distance to the 6th nearest neighbour
@@ -169,7 +169,7 @@ std::size_t cut_point_gaps(Skeleton_graph<Traits>& g, const std::vector<std::arr
           widest = along[k + 1].abscissa - along[k].abscissa;
           gap = k;
         }
-      if(widest < 0.6 * voxel)
+      if(widest < min_gap)
         continue;
       // A curve that leaves a part crosses its surface: the points bounding the gap lie
       // near the line. Along a thin part, a sampling gap is bounded by the wall, as far
@@ -194,9 +194,9 @@ std::size_t cut_point_gaps(Skeleton_graph<Traits>& g, const std::vector<std::arr
         ++above;
       const double r = CGAL::to_double(g[v].radius);
       const bool dense_walls = (std::min)(below, above) >= dense_wall_points && offset < 0.7 * (std::max)(r, voxel);
-      const bool beyond_spacing = widest >= min_width && offset < r && widest >= local_spacing(along[gap].point) &&
-                                  widest >= local_spacing(along[gap + 1].point);
-      if(dense_walls || beyond_spacing)
+      // the neighbour searches of the spacing test only where the walls did not decide
+      if(dense_walls || (widest >= min_width && offset < r && widest >= local_spacing(along[gap].point) &&
+                         widest >= local_spacing(along[gap + 1].point)))
         candidates.emplace_back(-widest, v);
     }
   }
