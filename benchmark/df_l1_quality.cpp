@@ -43,6 +43,7 @@ struct Options
   int first = 0;
   std::size_t points = 20000;
   int jobs = 2;
+  int resolution = 100; // voxel_resolution of every run
   std::string previews = "failures"; // failures, all, none
   std::string scans_dir;
   std::string scan_filter;
@@ -67,7 +68,7 @@ std::vector<std::string> split(const std::string& s)
 void usage(std::ostream& os)
 {
   os << "usage: df_l1_quality [--out DIR] [--families a,b] [--degradations a,b] [--shapes N] [--first K]\n"
-        "         [--points N] [--jobs J] [--previews failures|all|none] [--scans DIR|none] [--scan-filter NAME]\n"
+        "         [--points N] [--jobs J] [--resolution V] [--previews failures|all|none] [--scans DIR|none] [--scan-filter NAME]\n"
         "         [--no-corpus] [--results FILE.tsv] [--previous FILE.tsv] [--markdown FILE.md] [--label TEXT]\n"
         "         [--command TEXT] [--scan-sheet PATH] [--failure-sheet PATH] [--list] [--quiet]\n";
 }
@@ -101,7 +102,7 @@ Row run_corpus_case(const Options& o, const DF_L1_test::Shape& shape, const std:
   row.points = sample.points.size();
   try {
     const auto start = std::chrono::steady_clock::now();
-    CGAL::DF_L1_skeletonization<K, CGAL::Sequential_tag> s(sample.points);
+    CGAL::DF_L1_skeletonization<K, CGAL::Sequential_tag> s(sample.points, CGAL::parameters::voxel_resolution(o.resolution));
     const auto& g = s.skeleton();
     row.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     DF_L1_test::Quality_options qo;
@@ -137,7 +138,7 @@ Row run_scan(const Options& o, const DF_L1_quality::Scan_expectation& e)
     const auto cloud = DF::read_point_cloud<K>(o.scans_dir + "/" + e.file);
     row.points = cloud.points.size();
     const auto start = std::chrono::steady_clock::now();
-    CGAL::DF_L1_skeletonization<K, CGAL::Sequential_tag> s(cloud.points);
+    CGAL::DF_L1_skeletonization<K, CGAL::Sequential_tag> s(cloud.points, CGAL::parameters::voxel_resolution(o.resolution));
     const auto& g = s.skeleton();
     row.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     const DF::Skeleton_statistics st = DF::skeleton_statistics(g);
@@ -207,6 +208,7 @@ int main(int argc, char* argv[])
     else if(a == "--first") o.first = std::stoi(value());
     else if(a == "--points") o.points = std::size_t(std::stoull(value()));
     else if(a == "--jobs") o.jobs = std::max(1, std::stoi(value()));
+    else if(a == "--resolution") o.resolution = std::stoi(value());
     else if(a == "--previews") o.previews = value();
     else if(a == "--scans") o.scans_dir = value();
     else if(a == "--scan-filter") o.scan_filter = value();

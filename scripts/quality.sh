@@ -11,6 +11,7 @@
 #   scripts/quality.sh --quick         # 3 shapes per family and the scans: a first look, no files replaced
 #   scripts/quality.sh --no-build ...  # reuse build-quality
 #   scripts/quality.sh -- --families trees --degradations clean,noise_1.0   # any df_l1_quality options (no files replaced)
+#   scripts/quality.sh -- --families trees --resolution 150                 # another voxel_resolution than the default 100
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="$root/build-quality"
@@ -24,7 +25,7 @@ while [ $# -gt 0 ]; do
     --quick) quick=1 ;;
     --build-dir) build="$2"; out="$build/quality"; shift ;;
     --) shift; extra=("$@"); break ;;
-    -h|--help) sed -n '2,15p' "${BASH_SOURCE[0]}"; exit 0 ;;
+    -h|--help) sed -n '2,16p' "${BASH_SOURCE[0]}"; exit 0 ;;
     *) echo "quality.sh: unknown option $1" >&2; exit 2 ;;
   esac
   shift
