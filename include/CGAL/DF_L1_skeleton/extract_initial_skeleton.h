@@ -389,10 +389,15 @@ void prune_spurs(Skeleton_graph<Traits>& g, double ratio, double voxel_size)
     struct Candidate
     {
       std::vector<std::size_t> chain;
-      double length; // up to the edge to the junction
-      bool thin;     // ends less than two voxels deep
+      double length;        // up to the edge to the junction
+      bool thin;            // ends less than two voxels deep
+      std::size_t junction; // where the chain meets the rest
     };
     std::vector<Candidate> candidates;
+    // Chains to remove. Two of them at one junction go in different rounds: once one is
+    // gone, the other may merge with the branch behind it (a hair on the side of a twig
+    // near its tip leaves the tip on a short chain that the hair and the twig cover).
+    std::vector<Candidate> removals;
     for(vertex end = 0; end < boost::num_vertices(g); ++end)
     {
       if(boost::degree(end, g) != 1)
@@ -429,14 +434,12 @@ void prune_spurs(Skeleton_graph<Traits>& g, double ratio, double voxel_size)
       }
       const double chain_length = length;
       length += std::sqrt(CGAL::to_double(CGAL::squared_distance(g[previous].point, g[current].point)));
+      Candidate k{std::vector<std::size_t>(chain.begin(), chain.end()), chain_length,
+                  CGAL::to_double(g[end].radius) < 2 * voxel_size, current};
       if(length < ratio * CGAL::to_double(g[current].radius) + voxel_size)
-        for(vertex v : chain)
-          doomed[v] = 1;
+        removals.push_back(std::move(k));
       else
-      {
-        candidates.push_back({std::vector<std::size_t>(chain.begin(), chain.end()), chain_length,
-                              CGAL::to_double(g[end].radius) < 2 * voxel_size});
-      }
+        candidates.push_back(std::move(k));
     }
     if(!candidates.empty())
     {
@@ -466,8 +469,7 @@ void prune_spurs(Skeleton_graph<Traits>& g, double ratio, double voxel_size)
       for(std::size_t c : covered)
         if(!sticks_out(c, excluded))
         {
-          for(std::size_t v : candidates[c].chain)
-            doomed[v] = 1;
+          removals.push_back(candidates[c]);
           any = true;
         }
       if(!any && !covered.empty())
@@ -477,9 +479,19 @@ void prune_spurs(Skeleton_graph<Traits>& g, double ratio, double voxel_size)
         const std::size_t shortest = *std::min_element(covered.begin(), covered.end(), [&](std::size_t a, std::size_t b) {
           return candidates[a].length < candidates[b].length;
         });
-        for(std::size_t v : candidates[shortest].chain)
-          doomed[v] = 1;
+        removals.push_back(candidates[shortest]);
       }
+    }
+    std::stable_sort(removals.begin(), removals.end(),
+                     [](const Candidate& a, const Candidate& b) { return a.length < b.length; });
+    std::vector<char> touched(boost::num_vertices(g), 0);
+    for(const Candidate& k : removals)
+    {
+      if(touched[k.junction])
+        continue;
+      touched[k.junction] = 1;
+      for(std::size_t v : k.chain)
+        doomed[v] = 1;
     }
     // Remove the doomed vertices, from the last so that indices stay valid (vecS).
     for(vertex v = 0; v < boost::num_vertices(g); ++v)
@@ -554,7 +566,10 @@ void prune_spurs(Skeleton_graph<Traits>& g, double ratio, double voxel_size)
 ///   is. A branch ending less than two voxels deep (in a thin part) is covered when each
 ///   ball lies within 2 voxels + r(v) of the others: at a scanned hoof or a twig tip the
 ///   balls are a voxel or two wide, and more slack would swallow the tip. In a thin part,
-///   the local radius is the distance to the nearest unoccupied voxel less half a voxel;
+///   the local radius is the distance to the nearest unoccupied voxel less half a voxel.
+///   Of two branches removed at one junction only the shorter goes in a round: the other
+///   may then continue the branch behind it (a hair beside a twig near its tip leaves the
+///   tip on a short branch that the hair covers);
 /// - a cycle of the graph that bounds a disk inside the solid of occupied and interior
 ///   voxels closed by one voxel (the cone from its centroid over its edges, sampled every
 ///   0.4 voxel, meets no exterior or outlier voxel farther than sqrt(3) voxels from the
