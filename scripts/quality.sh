@@ -25,7 +25,7 @@ while [ $# -gt 0 ]; do
     --quick) quick=1 ;;
     --build-dir) build="$2"; out="$build/quality"; shift ;;
     --) shift; extra=("$@"); break ;;
-    -h|--help) sed -n '2,16p' "${BASH_SOURCE[0]}"; exit 0 ;;
+    -h|--help) sed -n '2,14p' "${BASH_SOURCE[0]}"; exit 0 ;;
     *) echo "quality.sh: unknown option $1" >&2; exit 2 ;;
   esac
   shift
