@@ -219,8 +219,9 @@ TEST_CASE("corpus: a sample of families and degradations keeps its quality", "[c
 TEST_CASE("corpus: the short twigs of trees with many tips keep their ends", "[corpus]")
 {
   // The twigs are 1.75 voxels in radius and stick out 4 to 8 voxels beyond their parent:
-  // a hair beside a twig tip, that the tip's short branch and the twig cover as much as
-  // the hair, must be pruned before the tip, not with it.
+  // their curves may end where they are the deepest within a few voxels (not within the
+  // 4-voxel blocks that reach the parent), and a hair beside a twig tip, that the tip's
+  // short branch and the twig cover as much as the hair, is pruned before the tip.
   double sum = 0;
   for(int index : {14, 15, 19, 23}) {
     const Shape shape = corpus_shape("trees", index);
@@ -229,10 +230,10 @@ TEST_CASE("corpus: the short twigs of trees with many tips keep their ends", "[c
     const double voxel = CGAL::to_double(s.distance_field().voxel_size);
     const double recall = tip_recall(shape, s.skeleton(), 5 * voxel);
     std::cout << shape.name() << " clean: " << recall << " of the tips kept\n";
-    CHECK(recall >= 0.58);
+    CHECK(recall >= 0.6);
     sum += recall;
   }
-  CHECK(sum / 4 >= 0.66);
+  CHECK(sum / 4 >= 0.7);
 }
 
 TEST_CASE("corpus: a ring whose ends come 1 to 2 voxels close is cut open, legs that touch are parted, closed rings keep their loops", "[corpus]")

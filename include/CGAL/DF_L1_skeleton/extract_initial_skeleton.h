@@ -229,7 +229,7 @@ bool ridge_voxels(const Distance_field<Traits>& field, const std::vector<float>&
 }
 
 // Maxima of the distance field over blocks of 4x4x4 voxels, so that the maximum over a
-// large window costs a few block reads.
+// large window costs a few block reads; a small window may be read voxel by voxel.
 class Block_maximum
 {
 public:
@@ -238,6 +238,7 @@ public:
   // `values`: one value per voxel of the grid of `df`
   template <class Traits>
   Block_maximum(const Distance_field<Traits>& df, const std::vector<float>& values)
+    : values_(&values), grid_{{df.dims[0], df.dims[1], df.dims[2]}}
   {
     for(int a = 0; a < 3; ++a)
       dims_[a] = (df.dims[a] + block - 1) / block;
@@ -251,9 +252,19 @@ public:
         }
   }
 
-  // The maximum over the blocks that meet the voxel box [lo, hi] (inclusive).
-  float over(const std::array<int, 3>& lo, const std::array<int, 3>& hi) const
+  // The maximum over the blocks that meet the voxel box [lo, hi] (inclusive), or with
+  // `exact` over the box itself: the blocks widen a box by up to 3 voxels a side.
+  float over(const std::array<int, 3>& lo, const std::array<int, 3>& hi, bool exact = false) const
   {
+    if(exact)
+    {
+      float m = 0;
+      for(int k = (std::max)(0, lo[2]); k <= (std::min)(grid_[2] - 1, hi[2]); ++k)
+        for(int j = (std::max)(0, lo[1]); j <= (std::min)(grid_[1] - 1, hi[1]); ++j)
+          for(int i = (std::max)(0, lo[0]); i <= (std::min)(grid_[0] - 1, hi[0]); ++i)
+            m = (std::max)(m, (*values_)[(std::size_t(k) * grid_[1] + j) * grid_[0] + i]);
+      return m;
+    }
     std::array<int, 3> a, b;
     for(int d = 0; d < 3; ++d)
     {
@@ -270,6 +281,8 @@ public:
 
 private:
   std::size_t index(int i, int j, int k) const { return (std::size_t(k) * dims_[1] + j) * dims_[0] + i; }
+  const std::vector<float>* values_;
+  std::array<int, 3> grid_;
   std::array<int, 3> dims_;
   std::vector<float> maxima_;
 };
@@ -278,14 +291,17 @@ private:
 // within about twice its own (the blocks that meet that cube). The end of a real branch
 // sits near the centre of the ball that caps it, where the depth peaks; the noise of the
 // surface raises ridge voxels a few voxels deep on the slope of a much deeper field, and
-// a curve ending there would be a spur.
+// a curve ending there would be a spur. With `exact` (thin parts, one or two voxels
+// deep) the cube itself is read, at least 3 voxels a side as the widest neighbourhood of
+// the ridge test: the blocks would stretch a window of 2 to 4 voxels to 5 to 7, and the
+// tip of a twig five voxels out of a thicker branch would be measured against the branch.
 template <class Traits>
 bool is_deep_end(const Distance_field<Traits>& df, const std::vector<float>& depth, const Block_maximum& maxima,
-                 std::size_t v, double ratio)
+                 std::size_t v, double ratio, bool exact = false)
 {
   const std::array<int, 3> c = df.coordinates(v);
-  const int r = int(std::ceil(2 * depth[v]));
-  return depth[v] >= ratio * maxima.over({{c[0] - r, c[1] - r, c[2] - r}}, {{c[0] + r, c[1] + r, c[2] + r}});
+  const int r = exact ? (std::max)(3, int(std::ceil(2 * depth[v]))) : int(std::ceil(2 * depth[v]));
+  return depth[v] >= ratio * maxima.over({{c[0] - r, c[1] - r, c[2] - r}}, {{c[0] + r, c[1] + r, c[2] + r}}, exact);
 }
 
 // The balls of a skeleton graph (vertex, local radius), to ask whether those of a chain
@@ -550,8 +566,9 @@ void prune_spurs(Skeleton_graph<Traits>& g, double ratio, double voxel_size)
 ///   twig, a wire, a plate), which the curves would otherwise miss whole (a flat layer of
 ///   points stays without skeleton); there the thinning follows the distance
 ///   to the nearest unoccupied voxel, and a curve may end at a voxel 0.6 times as deep as
-///   the deepest within twice its depth (3/4 cut the tips of twigs one voxel wider than
-///   their neighbourhood's deepest, 1.41 against 2.24 voxels). The
+///   the deepest within twice its depth and at least 3 voxels, read voxel by voxel (3/4
+///   cut the tips of twigs one voxel wider than their neighbourhood's deepest, 1.41
+///   against 2.24 voxels). The
 ///   tree scan of our tests went from 8 pieces to one skeleton through its twigs, the
 ///   camel's legs now reach the ground; the 72 synthetic cases do not change (their
 ///   thinnest tubes are 3 voxels in radius or more);
@@ -697,7 +714,8 @@ Initial_skeleton<Traits> extract_initial_skeleton(const Distance_field<Traits>& 
     if(!in[v] && !thin_end)
       return false;
     if(deep_end[v] < 0)
-      deep_end[v] = internal::is_deep_end(field, depth, maxima, v, in[v] ? ridge_end_ratio : thin_end_ratio);
+      deep_end[v] = internal::is_deep_end(field, depth, maxima, v, in[v] ? ridge_end_ratio : thin_end_ratio,
+                                          with_thin_parts && thin.voxels[v]);
     return bool(deep_end[v]);
   });
   std::vector<std::size_t> curve_voxels;
