@@ -236,6 +236,27 @@ TEST_CASE("corpus: the short twigs of trees with many tips keep their ends", "[c
   CHECK(sum / 4 >= 0.7);
 }
 
+TEST_CASE("corpus: a plate thinned to pieces is joined through its occupied voxels", "[corpus]")
+{
+  // Smoothed, a plate two or three voxels thick keeps too few voxels a voxel deep to hold
+  // one curve; the pieces lie in one component of the occupied voxels. Disjoint objects
+  // stay apart.
+  auto components = [](const std::string& family, int index, const std::string& degradation) {
+    const Shape shape = corpus_shape(family, index);
+    const Degradation d = corpus_degradation(degradation);
+    const Sample sample = make_sample(shape, d.variant, 20000, 1000 + std::uint64_t(index), d.options);
+    CGAL::DF_L1_skeletonization<K> s(sample.points);
+    const CGAL::DF_L1::Skeleton_statistics st = CGAL::DF_L1::skeleton_statistics(s.skeleton());
+    INFO(shape.name() << ' ' << degradation);
+    CHECK(st.cycles == std::size_t(shape.expected_topology().cycles));
+    return int(st.components);
+  };
+  for(int index : {1, 2, 5})
+    CHECK(components("sheets", index, "noise_0.3") == 1);
+  for(int index : {0, 1})
+    CHECK(components("disjoint", index, "noise_0.3") == corpus_shape("disjoint", index).expected_topology().components);
+}
+
 TEST_CASE("corpus: a ring whose ends come 1 to 2 voxels close is cut open, legs that touch are parted, closed rings keep their loops", "[corpus]")
 {
   // The voxels of the two ends of the C touch: the pocket between them is taken for

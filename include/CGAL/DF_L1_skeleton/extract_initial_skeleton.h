@@ -12,6 +12,7 @@
 #include <CGAL/DF_L1_skeleton/internal/box_sum.h>
 #include <CGAL/DF_L1_skeleton/internal/contractible_cycles.h>
 #include <CGAL/DF_L1_skeleton/internal/curve_thinning.h>
+#include <CGAL/DF_L1_skeleton/internal/join_pieces.h>
 #include <CGAL/DF_L1_skeleton/internal/parallel_for.h>
 #include <CGAL/DF_L1_skeleton/internal/voxel_components.h>
 #include <CGAL/DF_L1_skeleton/internal/voxel_curve_graph.h>
@@ -594,6 +595,10 @@ void prune_spurs(Skeleton_graph<Traits>& g, double ratio, double voxel_size)
 ///   surface, or a gap of one or two voxels between parts that almost touch. Such a
 ///   cycle loses its thinner arc between two junctions, and the spurs are pruned again.
 ///   A handle's hole is wider than that, so its loop stays;
+/// - pieces of the graph that lie in one 26-connected component of the occupied voxels
+///   are joined, nearest first, by the path through those voxels that stays deepest: a
+///   smoothed plate a few voxels thick, or a stretch of a noisy limb, may keep no voxel
+///   deep enough for a curve, but the skeleton of a connected solid is connected;
 /// - with `occupied_depth` (our addition, for smoothed noisy clouds), the depth that the
 ///   ridge test, the thinning, the end test and the radii read is not the distance field
 ///   but the distance to the nearest unoccupied voxel less one, and the solid also takes
@@ -736,6 +741,11 @@ Initial_skeleton<Traits> extract_initial_skeleton(const Distance_field<Traits>& 
   internal::prune_spurs(result.graph, spur_ratio, voxel);
   if(skeleton_statistics(result.graph).cycles > 0 && internal::cut_contractible_cycles(result.graph, field, field.labels) > 0)
     internal::prune_spurs(result.graph, spur_ratio, voxel);
+  // Pieces within one component of the occupied voxels are joined; the depth of the
+  // thin parts is the same transform when it was computed.
+  if(skeleton_statistics(result.graph).components > 1)
+    internal::join_pieces_within_shape(result.graph, field,
+                                       thin.depth.empty() ? internal::occupied_depth(field) : thin.depth);
   return result;
 }
 

@@ -1,0 +1,171 @@
+// Copyright (c) 2026 DF_L1_skeleton contributors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+#ifndef CGAL_DF_L1_SKELETON_INTERNAL_JOIN_PIECES_H
+#define CGAL_DF_L1_SKELETON_INTERNAL_JOIN_PIECES_H
+
+#include <CGAL/DF_L1_skeleton/Skeleton_graph.h>
+#include <CGAL/DF_L1_skeleton/distance_field.h>
+#include <CGAL/DF_L1_skeleton/internal/voxel_components.h>
+
+#include <boost/graph/connected_components.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <queue>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace DF_L1 {
+namespace internal {
+
+// Joins the pieces of a curve graph that lie in one 26-connected component of the
+// occupied voxels: the skeleton of a connected solid is connected. A thin plate or a
+// limb whose smoothed shell leaves no voxel deep enough on a stretch is thinned to
+// pieces; they are joined by the path through the occupied voxels that keeps deepest
+// (a step costs its length over the depth of the voxel it enters plus half a voxel),
+// from the piece with the lowest vertex index to the nearest other piece, until one
+// piece is left. `depth`: per voxel, the distance (voxels) to the nearest voxel that is
+// not occupied. Returns the number of joins.
+template <class Traits>
+std::size_t join_pieces_within_shape(Skeleton_graph<Traits>& g, const Distance_field<Traits>& field,
+                                     const std::vector<float>& depth)
+{
+  typedef typename boost::graph_traits<Skeleton_graph<Traits>>::vertex_descriptor vertex;
+  const std::size_t n = boost::num_vertices(g);
+  if(n < 2)
+    return 0;
+  std::vector<int> piece(n);
+  const int pieces = boost::connected_components(g, piece.data());
+  if(pieces < 2)
+    return 0;
+  // the voxel of each vertex, and the vertex of each voxel (the path vertices added by
+  // the joins belong to the piece they join to, so later paths end on them)
+  std::vector<std::size_t> voxel_of(n);
+  std::vector<std::size_t> vertex_at(field.size(), std::numeric_limits<std::size_t>::max());
+  for(vertex v = 0; v < n; ++v)
+  {
+    const std::array<int, 3> c = field.locate(g[v].point);
+    voxel_of[v] = field.index(c[0], c[1], c[2]);
+    vertex_at[voxel_of[v]] = v;
+  }
+  std::vector<int> shape_component(field.size(), -1);
+  int components = 0;
+  for_each_26_component(field, [&](std::size_t v) { return Voxel_grid<Traits>::is_occupied(field.labels[v]); },
+                        [&](const std::vector<std::size_t>& voxels) {
+    for(std::size_t v : voxels)
+      shape_component[v] = components;
+    ++components;
+  });
+  // pieces grouped by the shape component of their first vertex
+  std::vector<std::vector<int>> pieces_in(std::size_t(components) + 1);
+  std::vector<char> listed(std::size_t(pieces), 0);
+  for(vertex v = 0; v < n; ++v)
+  {
+    if(listed[std::size_t(piece[v])])
+      continue;
+    listed[std::size_t(piece[v])] = 1;
+    const int c = shape_component[voxel_of[v]];
+    if(c >= 0)
+      pieces_in[std::size_t(c)].push_back(piece[v]);
+  }
+  // union-find over the pieces, as joins merge them
+  std::vector<int> parent(static_cast<std::size_t>(pieces));
+  for(int p = 0; p < pieces; ++p)
+    parent[std::size_t(p)] = p;
+  std::function<int(int)> root = [&](int p) {
+    while(parent[std::size_t(p)] != p)
+      p = parent[std::size_t(p)] = parent[std::size_t(parent[std::size_t(p)])];
+    return p;
+  };
+  const double voxel = CGAL::to_double(field.voxel_size);
+  std::size_t joins = 0;
+  std::vector<double> cost(field.size(), std::numeric_limits<double>::infinity());
+  std::vector<std::size_t> from(field.size());
+  std::vector<std::size_t> touched;
+  for(std::size_t c = 0; c < std::size_t(components); ++c)
+  {
+    const std::vector<int>& here = pieces_in[c];
+    for(std::size_t join = 1; join < here.size(); ++join)
+    {
+      const int grown = root(here.front());
+      typedef std::pair<double, std::size_t> Entry;
+      std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue;
+      for(vertex v = 0; v < boost::num_vertices(g); ++v)
+        if(root(piece[v]) == grown)
+        {
+          cost[voxel_of[v]] = 0;
+          from[voxel_of[v]] = voxel_of[v];
+          touched.push_back(voxel_of[v]);
+          queue.push({0.0, voxel_of[v]});
+        }
+      std::size_t reached = std::numeric_limits<std::size_t>::max();
+      while(!queue.empty())
+      {
+        const Entry e = queue.top();
+        queue.pop();
+        if(e.first > cost[e.second])
+          continue;
+        const std::size_t at = vertex_at[e.second];
+        if(at != std::numeric_limits<std::size_t>::max() && root(piece[at]) != grown)
+        {
+          reached = e.second;
+          break;
+        }
+        const std::array<int, 3> a = field.coordinates(e.second);
+        for_each_neighbour_26(field, e.second, [&](std::size_t w) {
+          if(shape_component[w] != int(c))
+            return;
+          const std::array<int, 3> b = field.coordinates(w);
+          const double step = std::sqrt(double((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) +
+                                               (a[2] - b[2]) * (a[2] - b[2])));
+          const double next = e.first + step / (double(depth[w]) + 0.5);
+          if(next < cost[w])
+          {
+            if(cost[w] == std::numeric_limits<double>::infinity())
+              touched.push_back(w);
+            cost[w] = next;
+            from[w] = e.second;
+            queue.push({next, w});
+          }
+        });
+      }
+      if(reached == std::numeric_limits<std::size_t>::max())
+        break; // cannot happen within one component; stay safe
+      // the path, from the reached piece back to the grown one, as new vertices
+      const int other = root(piece[vertex_at[reached]]);
+      vertex previous = vertex_at[reached];
+      for(std::size_t v = from[reached];; v = from[v])
+      {
+        vertex here_vertex = vertex_at[v];
+        if(here_vertex == std::numeric_limits<std::size_t>::max())
+        {
+          here_vertex = boost::add_vertex(g);
+          piece.push_back(grown);
+          voxel_of.push_back(v);
+          g[here_vertex].point = field.center(v);
+          g[here_vertex].radius = (std::max)(CGAL::to_double(field.distance(v)), (double(depth[v]) - 0.5) * voxel);
+          vertex_at[v] = here_vertex;
+        }
+        boost::add_edge(previous, here_vertex, g);
+        previous = here_vertex;
+        if(from[v] == v)
+          break;
+      }
+      parent[std::size_t(other)] = grown;
+      ++joins;
+      for(std::size_t v : touched)
+        cost[v] = std::numeric_limits<double>::infinity();
+      touched.clear();
+    }
+  }
+  return joins;
+}
+
+} // namespace internal
+} // namespace DF_L1
+} // namespace CGAL
+
+#endif // CGAL_DF_L1_SKELETON_INTERNAL_JOIN_PIECES_H
