@@ -10,7 +10,9 @@
 #include <boost/graph/connected_components.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstddef>
 #include <functional>
 #include <limits>
 #include <queue>
@@ -60,7 +62,7 @@ std::size_t join_pieces_within_shape(Skeleton_graph<Traits>& g, const Distance_f
     ++components;
   });
   // pieces grouped by the shape component of their first vertex
-  std::vector<std::vector<int>> pieces_in(std::size_t(components) + 1);
+  std::vector<std::vector<int>> pieces_in(static_cast<std::size_t>(components));
   std::vector<char> listed(std::size_t(pieces), 0);
   for(vertex v = 0; v < n; ++v)
   {
@@ -75,7 +77,7 @@ std::size_t join_pieces_within_shape(Skeleton_graph<Traits>& g, const Distance_f
   std::vector<int> parent(static_cast<std::size_t>(pieces));
   for(int p = 0; p < pieces; ++p)
     parent[std::size_t(p)] = p;
-  std::function<int(int)> root = [&](int p) {
+  auto root = [&](int p) {
     while(parent[std::size_t(p)] != p)
       p = parent[std::size_t(p)] = parent[std::size_t(parent[std::size_t(p)])];
     return p;
