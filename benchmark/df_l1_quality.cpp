@@ -98,7 +98,7 @@ Row run_corpus_case(const Options& o, const DF_L1_test::Shape& shape, const std:
   row.expected = shape.has_sheets() ? "-/-/" + std::to_string(shape.expected_topology().cycles) + "/" +
                                         std::to_string(shape.expected_topology().components)
                                     : counts(shape.expected_topology());
-  const DF_L1_test::Sample sample = DF_L1_test::make_sample(shape, d.variant, o.points, 1000 + std::uint64_t(index), d.options);
+  const DF_L1_test::Sample sample = DF_L1_test::corpus_sample(shape, index, d, o.points);
   row.points = sample.points.size();
   try {
     const auto start = std::chrono::steady_clock::now();

@@ -193,7 +193,7 @@ TEST_CASE("corpus: a sample of families and degradations keeps its quality", "[c
     const int index = 7;
     const Shape shape = corpus_shape(family, index);
     for(const Degradation& d : picked) {
-      const Sample sample = make_sample(shape, d.variant, 20000, 1000 + index, d.options);
+      const Sample sample = corpus_sample(shape, index, d);
       CGAL::DF_L1_skeletonization<K> s(sample.points);
       Quality_options qo;
       qo.junction_merge_radius_fraction = 1.0;
@@ -225,7 +225,7 @@ TEST_CASE("corpus: the short twigs of trees with many tips keep their ends", "[c
   double sum = 0;
   for(int index : {14, 15, 19, 23}) {
     const Shape shape = corpus_shape("trees", index);
-    const Sample sample = make_sample(shape, Variant::clean, 20000, 1000 + std::uint64_t(index));
+    const Sample sample = corpus_sample(shape, index, corpus_degradation("clean"));
     CGAL::DF_L1_skeletonization<K> s(sample.points);
     const double voxel = CGAL::to_double(s.distance_field().voxel_size);
     const double recall = tip_recall(shape, s.skeleton(), 5 * voxel);
@@ -244,7 +244,7 @@ TEST_CASE("corpus: a plate thinned to pieces is joined through its occupied voxe
   auto components = [](const std::string& family, int index, const std::string& degradation) {
     const Shape shape = corpus_shape(family, index);
     const Degradation d = corpus_degradation(degradation);
-    const Sample sample = make_sample(shape, d.variant, 20000, 1000 + std::uint64_t(index), d.options);
+    const Sample sample = corpus_sample(shape, index, d);
     CGAL::DF_L1_skeletonization<K> s(sample.points);
     const CGAL::DF_L1::Skeleton_statistics st = CGAL::DF_L1::skeleton_statistics(s.skeleton());
     INFO(shape.name() << ' ' << degradation);
@@ -264,7 +264,7 @@ TEST_CASE("corpus: a ring whose ends come 1 to 2 voxels close is cut open, legs 
   auto run = [](const std::string& family, int index, const std::string& degradation) {
     const Shape shape = corpus_shape(family, index);
     const Degradation d = corpus_degradation(degradation);
-    const Sample sample = make_sample(shape, d.variant, 20000, 1000 + std::uint64_t(index), d.options);
+    const Sample sample = corpus_sample(shape, index, d);
     CGAL::DF_L1_skeletonization<K> s(sample.points);
     Quality_options qo;
     qo.junction_merge_radius_fraction = 1.0;

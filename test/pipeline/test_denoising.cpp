@@ -138,7 +138,7 @@ TEST_CASE("denoising: thin parts sampled sparsely are not taken for noise", "[de
   // (the twigs' curvature), where noise would not; a noisy surface keeps its smoothing.
   const Shape tree = corpus_shape("trees", 14);
   const Degradation sparse = corpus_degradation("sparse_2000");
-  const Sample thin = make_sample(tree, sparse.variant, 20000, 1014, sparse.options);
+  const Sample thin = corpus_sample(tree, 14, sparse);
   CGAL::DF_L1_skeletonization<Kernel> on_thin(thin.points);
   CHECK(on_thin.surface_noise() > 0.2 * finest_voxel(thin.points));
   CHECK(on_thin.residual_growth() >= 3);

@@ -1000,6 +1000,14 @@ inline Degradation corpus_degradation(const std::string& name)
   throw std::invalid_argument("unknown corpus degradation '" + name + "'");
 }
 
+/// The cloud of a corpus case that `scripts/quality.sh` skeletonizes: `shape` (number
+/// `index` of its family) sampled with `points` points (the sparse degradation draws its
+/// own number) and degraded by `d`, with the seed 1000 + `index`.
+inline Sample corpus_sample(const Shape& shape, int index, const Degradation& d, std::size_t points = 20000)
+{
+  return make_sample(shape, d.variant, points, 1000 + std::uint64_t(index), d.options);
+}
+
 /// Whether a skeleton's topology is the designed one: components and cycles always;
 /// junctions and end points (within +-1 when `noisy`) unless the shape has plates.
 inline bool corpus_topology_matches(const Shape& shape, const Topology& got, bool noisy)
