@@ -254,7 +254,8 @@ public:
     compute_distance_field();
     initial_ = std::make_unique<Initial_skeleton>(DF_L1::extract_initial_skeleton(
       *field_, parameters::thinning_coefficient(thinning_coefficient_,
-               parameters::spur_length_ratio(spur_length_ratio_, parameters::thin_parts(!denoised_, parameters::occupied_depth(denoised_))))));
+               parameters::spur_length_ratio(spur_length_ratio_, parameters::thin_parts(!denoised_, parameters::occupied_depth(denoised_,
+               parameters::surface_noise(surface_noise_)))))));
     // The cycles through gaps between parts that the voxels could not separate are cut
     // where the points show the gap (`internal::cut_point_gaps()`); the stubs that are
     // left go through the spur pruning again.
@@ -266,7 +267,7 @@ public:
       const DF_L1::internal::Uniform_grid grid(xyz, 2 * voxel);
       const double spacing = DF_L1::internal::median_kth_neighbour_distance(xyz, 6, voxel / 2, grid);
       if(DF_L1::internal::cut_point_gaps(initial_->graph, xyz, grid, voxel, spacing) > 0)
-        DF_L1::internal::prune_spurs(initial_->graph, spur_length_ratio_, voxel);
+        DF_L1::internal::prune_spurs(initial_->graph, spur_length_ratio_, voxel, surface_noise_);
     }
     DF_L1::assign_points_to_skeleton<ConcurrencyTag>(points_, outliers_, initial_->graph);
   }

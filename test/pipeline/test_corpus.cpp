@@ -236,6 +236,28 @@ TEST_CASE("corpus: the short twigs of trees with many tips keep their ends", "[c
   CHECK(sum / 4 >= 0.7);
 }
 
+TEST_CASE("corpus: the twigs of smoothed noisy trees keep their ends", "[corpus]")
+{
+  // Smoothed, a twig 1.75 voxels in radius is 1.4 voxels deep in the occupied voxels:
+  // its curve may end there when its radius (not its depth less one, 0.4 voxel) is 0.6
+  // of the deepest nearby, and the bumps of the noise are told from twig tips by their
+  // height over the noise. Kept at 0.3 % noise: 0.22 to 0.59 of the tips before, 0.55
+  // to 0.83 now.
+  double sum = 0;
+  for(int index : {3, 14, 22, 23}) {
+    const Shape shape = corpus_shape("trees", index);
+    const Sample sample = corpus_sample(shape, index, corpus_degradation("noise_0.3"));
+    CGAL::DF_L1_skeletonization<K> s(sample.points);
+    CHECK(s.denoised());
+    const double voxel = CGAL::to_double(s.distance_field().voxel_size);
+    const double recall = tip_recall(shape, s.skeleton(), 5 * voxel);
+    std::cout << shape.name() << " noise_0.3: " << recall << " of the tips kept\n";
+    CHECK(recall >= 0.5);
+    sum += recall;
+  }
+  CHECK(sum / 4 >= 0.6);
+}
+
 TEST_CASE("corpus: a plate thinned to pieces is joined through its occupied voxels", "[corpus]")
 {
   // Smoothed, a plate two or three voxels thick keeps too few voxels a voxel deep to hold

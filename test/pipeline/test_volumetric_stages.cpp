@@ -416,6 +416,8 @@ TEST_CASE("bad input to the stages throws Invalid_input", "[errors]")
   CHECK_THROWS_AS(DF::voxelize_point_set(points, CGAL::parameters::initial_voxel_size(-1.0)), DF::Invalid_input);
   const auto field = DF::compute_distance_field(voxels_of(points));
   CHECK_THROWS_AS(DF::extract_initial_skeleton(field, CGAL::parameters::thinning_coefficient(0.0)), DF::Invalid_input);
+  CHECK_THROWS_AS(DF::extract_initial_skeleton(field, CGAL::parameters::surface_noise(-1.0)), DF::Invalid_input);
+  CHECK_THROWS_AS(DF::extract_initial_skeleton(field, CGAL::parameters::surface_noise(std::nan(""))), DF::Invalid_input);
   // Flat and linear inputs have no interior: the documented result is an empty skeleton.
   std::vector<Point_3> flat;
   for(int i = 0; i < 50; ++i)

@@ -49,6 +49,7 @@ enum df_l1_denoising_neighbors_t { df_l1_denoising_neighbors };
 enum df_l1_thin_parts_t { df_l1_thin_parts };
 enum df_l1_occupied_depth_t { df_l1_occupied_depth };
 enum df_l1_open_crotches_t { df_l1_open_crotches };
+enum df_l1_surface_noise_t { df_l1_surface_noise };
 } // namespace internal_np
 
 namespace parameters {
@@ -110,6 +111,12 @@ CGAL_DF_L1_ADD_NAMED_PARAMETER(df_l1_thin_parts, thin_parts)
 /// boundary shell is several voxels thick and leaves thin limbs no interior voxel two
 /// deep). `thin_parts` is then moot: the occupied voxels hold the thin parts.
 CGAL_DF_L1_ADD_NAMED_PARAMETER(df_l1_occupied_depth, occupied_depth)
+/// \ingroup PkgDFL1SkeletonNamedParameters
+/// The noise of the sampled surface, in input units, as `estimate_surface_noise()` gives
+/// it (default 0; `DF_L1_skeletonization` passes its estimate): the initial skeleton's
+/// spur pruning takes a branch for hair when it rises less than twice that above the
+/// rest, on top of its slack in voxels.
+CGAL_DF_L1_ADD_NAMED_PARAMETER(df_l1_surface_noise, surface_noise)
 /// \ingroup PkgDFL1SkeletonNamedParameters
 /// Whether the voxelization opens the interior voxels that see the exterior along 10 or
 /// more of the 26 grid directions: the crotches between close parts, narrower than the
@@ -274,6 +281,15 @@ double spur_length_ratio(const NamedParameters& np, const char* stage)
   if(!(ratio >= 0) || !std::isfinite(ratio))
     throw Invalid_input(std::string(stage) + ": spur_length_ratio must be a non-negative number");
   return ratio;
+}
+
+template <class NamedParameters>
+double surface_noise(const NamedParameters& np, const char* stage)
+{
+  const double noise = parameters::choose_parameter(parameters::get_parameter(np, internal_np::df_l1_surface_noise), 0.0);
+  if(!(noise >= 0) || !std::isfinite(noise))
+    throw Invalid_input(std::string(stage) + ": surface_noise must be a non-negative number");
+  return noise;
 }
 
 template <class NamedParameters>
