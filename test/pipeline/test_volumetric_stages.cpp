@@ -513,6 +513,39 @@ TEST_CASE("voxels: interior voxels that see the exterior along many lines are op
     CHECK(solid_topology(g, labels) == solid_topology(g, before));
   }
 
+  SECTION("a bridge across the pocket between two joined rods is opened, one between separate rods is kept")
+  {
+    // Two rods of radius 1.5 voxels along x, 16 voxels apart, in the slab 9 <= k <= 14,
+    // with interior voxels between them over 22 <= i <= 26 (a pocket the coarse levels
+    // left enclosed); with `joined`, a cross rod at i = 6 joins them into a U, and the
+    // bridge closes a loop through empty space.
+    auto rods = [&](bool joined) {
+      return labels_of(g, [&](int i, int j, int k) {
+        if(k < 9 || k > 14 || i < 6 || i > 42)
+          return L::EXTERIOR;
+        const double z = k - 11.5;
+        const bool rod = std::hypot(j - 16.0, z) <= 1.5 || std::hypot(j - 32.0, z) <= 1.5;
+        const bool cross = joined && i <= 8 && j >= 16 && j <= 32 && std::abs(z) <= 1.5;
+        if(rod || cross)
+          return L::BOUNDARY;
+        return i >= 22 && i <= 26 && j > 16 && j < 32 ? L::INTERIOR : L::EXTERIOR;
+      });
+    };
+    const std::vector<std::uint8_t> u = rods(true);
+    std::vector<std::uint8_t> labels = u;
+    DF::internal::open_lines_of_sight(g, labels, keep, shell_of(g, labels), 10, 2);
+    INFO("joined rods: components and loops " << solid_topology(g, u).first << ", " << solid_topology(g, u).second
+                                              << " before, " << solid_topology(g, labels).first << ", "
+                                              << solid_topology(g, labels).second << " after");
+    CHECK(solid_topology(g, u) == std::make_pair(1L, 1L));
+    CHECK(solid_topology(g, labels) == std::make_pair(1L, 0L));
+    const std::vector<std::uint8_t> apart = rods(false);
+    labels = apart;
+    DF::internal::open_lines_of_sight(g, labels, keep, shell_of(g, labels), 10, 2);
+    CHECK(solid_topology(g, apart) == std::make_pair(1L, 0L));
+    CHECK(solid_topology(g, labels) == std::make_pair(1L, 0L));
+  }
+
   auto box = [&](int hole) {
     return labels_of(g, [&](int i, int j, int k) {
       const bool in = i >= 8 && i <= 40 && j >= 8 && j <= 40 && k >= 4 && k <= 20;

@@ -5,6 +5,7 @@
 
 #include <CGAL/DF_L1_skeleton/Voxel_grid.h>
 #include <CGAL/DF_L1_skeleton/internal/curve_thinning.h>
+#include <CGAL/DF_L1_skeleton/internal/voxel_components.h>
 #include <CGAL/DF_L1_skeleton/internal/voxel_topology.h>
 
 #include <algorithm>
@@ -86,14 +87,52 @@ std::vector<std::uint32_t> exterior_lines_of_sight(const Grid_geometry<Traits>& 
   return count;
 }
 
+// The `open` voxels whose 26-connected region of open voxels touches at most one
+// 26-connected piece of `shell`. A bridge of such voxels between two parts closes a loop
+// through empty space, as the surface joins the parts already; one between pieces of
+// the shell that nothing else joins (the sparse twigs of a scanned crown) holds the
+// shape together.
+template <class Traits>
+std::vector<char> within_one_shell_piece(const Grid_geometry<Traits>& g, const std::vector<char>& open,
+                                         const std::vector<char>& shell)
+{
+  const std::size_t none = std::size_t(-1);
+  std::vector<std::size_t> piece(open.size(), none);
+  std::size_t pieces = 0;
+  for_each_26_component(g, [&](std::size_t v) { return shell[v] != 0; }, [&](const std::vector<std::size_t>& c) {
+    for(std::size_t v : c)
+      piece[v] = pieces;
+    ++pieces;
+  });
+  std::vector<char> result(open.size(), 0);
+  for_each_26_component(g, [&](std::size_t v) { return open[v] != 0; }, [&](const std::vector<std::size_t>& c) {
+    std::size_t touched = none;
+    bool several = false;
+    for(std::size_t v : c)
+      for_each_neighbour_26(g, v, [&](std::size_t w) {
+        if(piece[w] == none)
+          return;
+        several = several || (touched != none && piece[w] != touched);
+        touched = piece[w];
+      });
+    if(!several)
+      for(std::size_t v : c)
+        result[v] = 1;
+  });
+  return result;
+}
+
 // The interior voxels that see the exterior along at least `min_directions` of the 26
 // grid directions, among them `min_pairs` pairs of opposite ones, become exterior,
 // unless `keep` holds them or opening them would change the topology of the solid
-// (boundary and interior voxels). A voxel between two parts sees out on opposite sides;
-// one inside a part behind a hole of the scan sees out through the hole alone. The lines
-// stop at the voxels of `blocker`: the boundary voxels dilated so that the gaps between
-// the samples of a sparse cloud are closed (boundary_shell() of voxelize_point_set.h).
-// No interior voxel may lie on the outer layer of the grid. Returns the number opened.
+// (boundary and interior voxels) otherwise than by breaking a bridge of interior voxels
+// between parts that the shell joins already (within_one_shell_piece()): such a bridge
+// across the pocket between the twigs of two branches of a tree closed a loop. A voxel
+// between two parts sees out on opposite sides; one inside a part behind a hole of the
+// scan sees out through the hole alone. The lines stop at the voxels of `blocker`: the
+// boundary voxels dilated so that the gaps between the samples of a sparse cloud are
+// closed (boundary_shell() of voxelize_point_set.h). No interior voxel may lie on the
+// outer layer of the grid. Returns the number opened.
 template <class Traits>
 std::size_t open_lines_of_sight(const Grid_geometry<Traits>& g, std::vector<std::uint8_t>& labels,
                                 const std::vector<char>& keep, const std::vector<char>& blocker, int min_directions,
@@ -123,14 +162,15 @@ std::size_t open_lines_of_sight(const Grid_geometry<Traits>& g, std::vector<std:
     count[v] = pairs >= min_pairs ? std::uint8_t(bit_count(seen[v])) : 0;
   }
   // Opened one at a time, most exposed first, and only while the solid keeps its
-  // topology: a line through a hole of the scan may see out from inside a part, and
-  // opening there would pierce it.
+  // topology, but for the bridges above: a line through a hole of the scan may see out
+  // from inside a part, and opening there would pierce it.
   std::vector<std::size_t> candidates;
   for(std::size_t v = 0; v < n; ++v)
     if(open[v] && !keep[v] && count[v] >= min_directions)
       candidates.push_back(v);
   std::stable_sort(candidates.begin(), candidates.end(),
                    [&](std::size_t a, std::size_t b) { return count[a] > count[b]; });
+  const std::vector<char> may_split = within_one_shell_piece(g, open, blocker);
   std::vector<std::uint8_t> solid(n);
   for(std::size_t v = 0; v < n; ++v)
     solid[v] = labels[v] != E;
@@ -143,7 +183,10 @@ std::size_t open_lines_of_sight(const Grid_geometry<Traits>& g, std::vector<std:
     std::size_t before = opened;
     for(std::size_t& v : candidates)
     {
-      if(v == std::size_t(-1) || !is_simple(neighbourhood_in(solid, 1, v, offsets)))
+      if(v == std::size_t(-1))
+        continue;
+      const Neighbourhood around = neighbourhood_in(solid, 1, v, offsets);
+      if(!(may_split[v] ? opens_no_tunnel(around) : is_simple(around)))
         continue;
       labels[v] = E;
       solid[v] = 0;

@@ -109,6 +109,17 @@ inline bool is_simple(Neighbourhood n)
   return count_components(~n & n18, adjacency_masks<1>(), n6) == 1;
 }
 
+// Whether removing the voxel leaves the background 18-neighbours one 6-component
+// 6-adjacent to it: it neither opens a tunnel nor a cavity into the exterior, while it
+// may split the object locally (break a bridge).
+inline bool opens_no_tunnel(Neighbourhood n)
+{
+  static const Neighbourhood all = cells_up_to_norm(3), n18 = cells_up_to_norm(2),
+                             n6 = cells_up_to_norm(1);
+  n &= all;
+  return count_components(~n & n18, adjacency_masks<1>(), n6) == 1;
+}
+
 } // namespace internal
 } // namespace DF_L1
 } // namespace CGAL
