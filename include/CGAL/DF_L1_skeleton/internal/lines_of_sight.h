@@ -170,7 +170,7 @@ std::size_t open_lines_of_sight(const Grid_geometry<Traits>& g, std::vector<std:
       candidates.push_back(v);
   std::stable_sort(candidates.begin(), candidates.end(),
                    [&](std::size_t a, std::size_t b) { return count[a] > count[b]; });
-  const std::vector<char> may_split = within_one_shell_piece(g, open, blocker);
+  std::vector<char> may_split; // computed when a bridge first asks to break: most grids have none
   std::vector<std::uint8_t> solid(n);
   for(std::size_t v = 0; v < n; ++v)
     solid[v] = labels[v] != E;
@@ -186,8 +186,15 @@ std::size_t open_lines_of_sight(const Grid_geometry<Traits>& g, std::vector<std:
       if(v == std::size_t(-1))
         continue;
       const Neighbourhood around = neighbourhood_in(solid, 1, v, offsets);
-      if(!(may_split[v] ? opens_no_tunnel(around) : is_simple(around)))
-        continue;
+      if(!is_simple(around))
+      {
+        if(!opens_no_tunnel(around))
+          continue;
+        if(may_split.empty())
+          may_split = within_one_shell_piece(g, open, blocker);
+        if(!may_split[v])
+          continue;
+      }
       labels[v] = E;
       solid[v] = 0;
       v = std::size_t(-1);
