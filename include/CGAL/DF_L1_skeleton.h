@@ -80,9 +80,10 @@ public:
   ///        `branch_directionality`, `number_of_iterations`, `contraction_stages` (see `voxelize_point_set()`,
   ///        `denoise_point_set()`, `upsample_sparse_regions()`, `remove_outlier_voxels()`,
   ///        `extract_initial_skeleton()` and `contract_samples()` for their meaning and
-  ///        defaults); the initial skeleton's `thin_parts` and `occupied_depth` are set
-  ///        by the class: `thin_parts` on exactly when the cloud was not smoothed
-  ///        (`denoised()`), `occupied_depth` on exactly when it was
+  ///        defaults); the initial skeleton's `thin_parts`, `occupied_depth` and
+  ///        `surface_noise` are set by the class: `thin_parts` on exactly when the cloud
+  ///        was not smoothed (`denoised()`), `occupied_depth` on exactly when it was,
+  ///        `surface_noise` to `surface_noise()`
   /// \throws DF_L1::Invalid_input if the range is empty, holds a non-finite coordinate,
   ///         all its points coincide or lie on a plane (within a quarter of a voxel, RMS),
   ///         or a parameter is out of range

@@ -298,7 +298,7 @@ private:
 // window of 2 to 4 voxels to 5 to 7, and the tip of a twig five voxels out of a thicker
 // branch would be measured against the branch. Depths measured in the occupied voxels
 // less one are half a voxel short of the radius (`to_radius` 0.5): as a ratio of such
-// depths, a twig tip 1.4 voxels deep beside a point 2 deep read 0.2 / 1 and never ended.
+// depths, a twig tip 1.4 voxels deep beside a voxel 2 deep read 0.4 / 1 and never ended.
 template <class Traits>
 bool is_deep_end(const Distance_field<Traits>& df, const std::vector<float>& depth, const Block_maximum& maxima,
                  std::size_t v, double ratio, bool exact = false, double to_radius = 0)

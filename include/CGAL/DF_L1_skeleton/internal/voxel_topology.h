@@ -96,28 +96,23 @@ inline int count_components(Neighbourhood members, const std::array<Neighbourhoo
   return count;
 }
 
-// A voxel of a 26-connected object is simple (removable without changing the topology)
-// iff its 26-neighbours in the object form one 26-component and the background
-// 18-neighbours have one 6-component 6-adjacent to it (Bertrand and Malandain, 1994).
-inline bool is_simple(Neighbourhood n)
-{
-  static const Neighbourhood all = cells_up_to_norm(3), n18 = cells_up_to_norm(2),
-                             n6 = cells_up_to_norm(1);
-  n &= all;
-  if(count_components(n, adjacency_masks<3>(), all) != 1)
-    return false;
-  return count_components(~n & n18, adjacency_masks<1>(), n6) == 1;
-}
-
 // Whether removing the voxel leaves the background 18-neighbours one 6-component
 // 6-adjacent to it: it neither opens a tunnel nor a cavity into the exterior, while it
 // may split the object locally (break a bridge).
 inline bool opens_no_tunnel(Neighbourhood n)
 {
-  static const Neighbourhood all = cells_up_to_norm(3), n18 = cells_up_to_norm(2),
-                             n6 = cells_up_to_norm(1);
-  n &= all;
+  static const Neighbourhood n18 = cells_up_to_norm(2), n6 = cells_up_to_norm(1);
   return count_components(~n & n18, adjacency_masks<1>(), n6) == 1;
+}
+
+// A voxel of a 26-connected object is simple (removable without changing the topology)
+// iff its 26-neighbours in the object form one 26-component and the background
+// 18-neighbours have one 6-component 6-adjacent to it (Bertrand and Malandain, 1994).
+inline bool is_simple(Neighbourhood n)
+{
+  static const Neighbourhood all = cells_up_to_norm(3);
+  n &= all;
+  return count_components(n, adjacency_masks<3>(), all) == 1 && opens_no_tunnel(n);
 }
 
 } // namespace internal
