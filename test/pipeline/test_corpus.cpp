@@ -57,6 +57,22 @@ double tip_recall(const Shape& shape, const Graph& g, double reach)
   return tips.empty() ? 1.0 : double(matched) / double(tips.size());
 }
 
+// The tip recall (within 5 voxels) of trees_`index` under `degradation`, skeletonized
+// with the defaults, printed; `denoised`, when given, receives whether the cloud was
+// smoothed.
+double tree_tip_recall(int index, const std::string& degradation, bool* denoised = nullptr)
+{
+  const Shape shape = corpus_shape("trees", index);
+  const Sample sample = corpus_sample(shape, index, corpus_degradation(degradation));
+  CGAL::DF_L1_skeletonization<K> s(sample.points);
+  if(denoised)
+    *denoised = s.denoised();
+  const double voxel = CGAL::to_double(s.distance_field().voxel_size);
+  const double recall = tip_recall(shape, s.skeleton(), 5 * voxel);
+  std::cout << shape.name() << ' ' << degradation << ": " << recall << " of the tips kept\n";
+  return recall;
+}
+
 } // namespace
 
 TEST_CASE("corpus: every shape is built, sized and designed as documented", "[corpus]")
@@ -227,12 +243,7 @@ TEST_CASE("corpus: the short twigs of trees with many tips keep their ends", "[c
   // two tips of trees_15 to trees_19).
   double sum = 0;
   for(int index : {14, 15, 19, 23}) {
-    const Shape shape = corpus_shape("trees", index);
-    const Sample sample = corpus_sample(shape, index, corpus_degradation("clean"));
-    CGAL::DF_L1_skeletonization<K> s(sample.points);
-    const double voxel = CGAL::to_double(s.distance_field().voxel_size);
-    const double recall = tip_recall(shape, s.skeleton(), 5 * voxel);
-    std::cout << shape.name() << " clean: " << recall << " of the tips kept\n";
+    const double recall = tree_tip_recall(index, "clean");
     CHECK(recall >= 0.55);
     sum += recall;
   }
@@ -248,13 +259,9 @@ TEST_CASE("corpus: the twigs of smoothed noisy trees keep their ends", "[corpus]
   // to 0.83 now.
   double sum = 0;
   for(int index : {3, 14, 22, 23}) {
-    const Shape shape = corpus_shape("trees", index);
-    const Sample sample = corpus_sample(shape, index, corpus_degradation("noise_0.3"));
-    CGAL::DF_L1_skeletonization<K> s(sample.points);
-    CHECK(s.denoised());
-    const double voxel = CGAL::to_double(s.distance_field().voxel_size);
-    const double recall = tip_recall(shape, s.skeleton(), 5 * voxel);
-    std::cout << shape.name() << " noise_0.3: " << recall << " of the tips kept\n";
+    bool denoised = false;
+    const double recall = tree_tip_recall(index, "noise_0.3", &denoised);
+    CHECK(denoised);
     CHECK(recall >= 0.5);
     sum += recall;
   }

@@ -274,22 +274,25 @@ double thinning_coefficient(const NamedParameters& np, const char* stage)
   return c;
 }
 
+inline double non_negative(double value, const char* name, const char* stage)
+{
+  if(!(value >= 0) || !std::isfinite(value))
+    throw Invalid_input(std::string(stage) + ": " + name + " must be a non-negative number");
+  return value;
+}
+
 template <class NamedParameters>
 double spur_length_ratio(const NamedParameters& np, const char* stage)
 {
-  const double ratio = parameters::choose_parameter(parameters::get_parameter(np, internal_np::df_l1_spur_length), 1.0);
-  if(!(ratio >= 0) || !std::isfinite(ratio))
-    throw Invalid_input(std::string(stage) + ": spur_length_ratio must be a non-negative number");
-  return ratio;
+  return non_negative(parameters::choose_parameter(parameters::get_parameter(np, internal_np::df_l1_spur_length), 1.0),
+                      "spur_length_ratio", stage);
 }
 
 template <class NamedParameters>
 double surface_noise(const NamedParameters& np, const char* stage)
 {
-  const double noise = parameters::choose_parameter(parameters::get_parameter(np, internal_np::df_l1_surface_noise), 0.0);
-  if(!(noise >= 0) || !std::isfinite(noise))
-    throw Invalid_input(std::string(stage) + ": surface_noise must be a non-negative number");
-  return noise;
+  return non_negative(parameters::choose_parameter(parameters::get_parameter(np, internal_np::df_l1_surface_noise), 0.0),
+                      "surface_noise", stage);
 }
 
 template <class NamedParameters>

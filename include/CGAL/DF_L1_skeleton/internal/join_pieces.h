@@ -53,14 +53,9 @@ std::size_t join_pieces_within_shape(Skeleton_graph<Traits>& g, const Distance_f
     voxel_of[v] = field.index(c[0], c[1], c[2]);
     vertex_at[voxel_of[v]] = v;
   }
-  std::vector<int> shape_component(field.size(), -1);
   int components = 0;
-  for_each_26_component(field, [&](std::size_t v) { return Voxel_grid<Traits>::is_occupied(field.labels[v]); },
-                        [&](const std::vector<std::size_t>& voxels) {
-    for(std::size_t v : voxels)
-      shape_component[v] = components;
-    ++components;
-  });
+  const std::vector<int> shape_component = label_26_components(
+    field, [&](std::size_t v) { return Voxel_grid<Traits>::is_occupied(field.labels[v]); }, components);
   // pieces grouped by the shape component of their first vertex
   std::vector<std::vector<int>> pieces_in(static_cast<std::size_t>(components));
   std::vector<char> listed(std::size_t(pieces), 0);

@@ -96,23 +96,17 @@ template <class Traits>
 std::vector<char> within_one_shell_piece(const Grid_geometry<Traits>& g, const std::vector<char>& open,
                                          const std::vector<char>& shell)
 {
-  const std::size_t none = std::size_t(-1);
-  std::vector<std::size_t> piece(open.size(), none);
-  std::size_t pieces = 0;
-  for_each_26_component(g, [&](std::size_t v) { return shell[v] != 0; }, [&](const std::vector<std::size_t>& c) {
-    for(std::size_t v : c)
-      piece[v] = pieces;
-    ++pieces;
-  });
+  int pieces = 0;
+  const std::vector<int> piece = label_26_components(g, [&](std::size_t v) { return shell[v] != 0; }, pieces);
   std::vector<char> result(open.size(), 0);
   for_each_26_component(g, [&](std::size_t v) { return open[v] != 0; }, [&](const std::vector<std::size_t>& c) {
-    std::size_t touched = none;
+    int touched = -1;
     bool several = false;
     for(std::size_t v : c)
       for_each_neighbour_26(g, v, [&](std::size_t w) {
-        if(piece[w] == none)
+        if(piece[w] < 0)
           return;
-        several = several || (touched != none && piece[w] != touched);
+        several = several || (touched >= 0 && piece[w] != touched);
         touched = piece[w];
       });
     if(!several)

@@ -98,6 +98,21 @@ void for_each_26_component(const Grid_geometry<Traits>& g, const InSet& in_set, 
   }, in_set, f);
 }
 
+// The number of its 26-connected component (in the order of their lowest index) for
+// every voxel where `in_set` holds, -1 elsewhere; `count` receives the number of them.
+template <class Traits, class InSet>
+std::vector<int> label_26_components(const Grid_geometry<Traits>& g, const InSet& in_set, int& count)
+{
+  std::vector<int> label(g.size(), -1);
+  count = 0;
+  for_each_26_component(g, in_set, [&](const std::vector<std::size_t>& component) {
+    for(std::size_t v : component)
+      label[v] = count;
+    ++count;
+  });
+  return label;
+}
+
 } // namespace internal
 } // namespace DF_L1
 } // namespace CGAL
