@@ -236,18 +236,18 @@ TEST_CASE("corpus: the short twigs of trees with many tips keep their ends", "[c
 {
   // The twigs are 1.75 voxels in radius and stick out 4 to 8 voxels beyond their parent:
   // their curves may end where they are the deepest within a few voxels (not within the
-  // 4-voxel blocks that reach the parent), and a hair beside a twig tip, that the tip's
-  // short branch and the twig cover as much as the hair, is pruned before the tip. The
-  // floor of each tree guards against a collapse; the mean is the measure (0.81, 0.59,
-  // 0.72 and 0.73 today: breaking the bridges across the pockets between branches moved
-  // two tips of trees_15 to trees_19).
+  // 4-voxel blocks that reach the parent), a hair beside a twig tip, that the tip's
+  // short branch and the twig cover as much as the hair, is pruned before the tip, and a
+  // twig that thinning ate from its flat tip gets its branch back. The floor of each tree
+  // guards against a collapse; the mean is the measure (0.85, 0.67, 0.78 and 0.79 today,
+  // 0.71 on average without the branches given back).
   double sum = 0;
   for(int index : {14, 15, 19, 23}) {
     const double recall = tree_tip_recall(index, "clean");
-    CHECK(recall >= 0.55);
+    CHECK(recall >= 0.6);
     sum += recall;
   }
-  CHECK(sum / 4 >= 0.7);
+  CHECK(sum / 4 >= 0.75);
 }
 
 TEST_CASE("corpus: the twigs of smoothed noisy trees keep their ends", "[corpus]")

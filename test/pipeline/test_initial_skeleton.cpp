@@ -4,6 +4,7 @@
 
 #include <CGAL/DF_L1_skeleton.h>
 #include <CGAL/DF_L1_skeleton/internal/contractible_cycles.h>
+#include <CGAL/DF_L1_skeleton/internal/missing_branches.h>
 #include <CGAL/DF_L1_skeleton/internal/voxel_curve_graph.h>
 #include <CGAL/DF_L1_skeleton/internal/voxel_topology.h>
 
@@ -11,7 +12,9 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -334,5 +337,76 @@ TEST_CASE("initial skeleton: a cycle that bounds a disk in the solid closed by a
     DF::Skeleton_graph<Kernel> g = loop_graph();
     CHECK(DF::internal::cut_contractible_cycles(g, grid, labels_with_hole(6)) == 0);
     CHECK(DF::skeleton_statistics(g).cycles == 1);
+  }
+}
+
+TEST_CASE("initial skeleton: a limb that no curve enters gets a branch, a bump does not", "[initial]")
+{
+  // A bar 8 x 8 voxels in section along x with a limb 3 x 3 voxels in section out of its
+  // side along y, `limb` voxels long; the graph runs along the bar's axis only.
+  auto field_with_limb = [](int limb) {
+    DF::Voxel_grid<Kernel> grid;
+    grid.dims = {{44, 40, 14}};
+    grid.labels.assign(grid.size(), DF::Voxel_label::EXTERIOR);
+    auto inside = [&](int i, int j, int k) {
+      const bool bar = i >= 2 && i <= 41 && j >= 2 && j <= 9 && k >= 3 && k <= 10;
+      const bool arm = i >= 20 && i <= 22 && j >= 10 && j < 10 + limb && k >= 5 && k <= 7;
+      return bar || arm;
+    };
+    for(int k = 0; k < grid.dims[2]; ++k)
+      for(int j = 0; j < grid.dims[1]; ++j)
+        for(int i = 0; i < grid.dims[0]; ++i)
+          if(inside(i, j, k))
+          {
+            const bool rim = !inside(i - 1, j, k) || !inside(i + 1, j, k) || !inside(i, j - 1, k) ||
+                             !inside(i, j + 1, k) || !inside(i, j, k - 1) || !inside(i, j, k + 1);
+            grid.labels[grid.index(i, j, k)] = rim ? DF::Voxel_label::BOUNDARY : DF::Voxel_label::INTERIOR;
+          }
+    return DF::compute_distance_field(grid);
+  };
+  auto bar_axis = [](const DF::Distance_field<Kernel>& field) {
+    DF::Skeleton_graph<Kernel> g;
+    for(int i = 4; i <= 39; ++i)
+    {
+      const std::size_t v = boost::add_vertex(g);
+      g[v].point = field.center(i, 5, 6);
+      g[v].radius = field.distance(field.index(i, 5, 6));
+      if(v > 0)
+        boost::add_edge(v - 1, v, g);
+    }
+    return g;
+  };
+  // the limb's voxels may hold a tip
+  auto limb_voxels = [](const DF::Distance_field<Kernel>& field) {
+    std::vector<char> limb(field.size(), 0);
+    for(std::size_t v = 0; v < field.size(); ++v)
+      limb[v] = field.coordinates(v)[1] >= 10 && DF::Voxel_grid<Kernel>::is_occupied(field.labels[v]);
+    return limb;
+  };
+  SECTION("a limb 14 voxels long: one branch, ending within two voxels of its tip")
+  {
+    const DF::Distance_field<Kernel> field = field_with_limb(14);
+    DF::Skeleton_graph<Kernel> g = bar_axis(field);
+    CHECK(DF::internal::add_missing_branches(g, field, DF::internal::occupied_depth(field), limb_voxels(field), 4.0, 1.5) == 1);
+    const DF::Skeleton_statistics s = DF::skeleton_statistics(g);
+    CHECK(s.components == 1);
+    CHECK(s.cycles == 0);
+    CHECK(s.end_points == 3);
+    double nearest = std::numeric_limits<double>::infinity();
+    for(std::size_t v = 0; v < boost::num_vertices(g); ++v)
+      if(boost::degree(v, g) == 1)
+        nearest = std::min(nearest, std::sqrt(CGAL::to_double(CGAL::squared_distance(g[v].point, Point_3(21.5, 23.5, 6.5)))));
+    CHECK(nearest <= 2.0);
+  }
+  SECTION("a bump 3 voxels high, the bar alone, or a limb whose voxels may not hold a tip: nothing")
+  {
+    for(int limb : {0, 3, 14})
+    {
+      const DF::Distance_field<Kernel> field = field_with_limb(limb);
+      DF::Skeleton_graph<Kernel> g = bar_axis(field);
+      const std::vector<char> tips = limb == 14 ? std::vector<char>(field.size(), 0) : limb_voxels(field);
+      CHECK(DF::internal::add_missing_branches(g, field, DF::internal::occupied_depth(field), tips, 4.0, 1.5) == 0);
+      CHECK(boost::num_vertices(g) == 36);
+    }
   }
 }

@@ -13,6 +13,7 @@
 #include <CGAL/DF_L1_skeleton/internal/contractible_cycles.h>
 #include <CGAL/DF_L1_skeleton/internal/curve_thinning.h>
 #include <CGAL/DF_L1_skeleton/internal/join_pieces.h>
+#include <CGAL/DF_L1_skeleton/internal/missing_branches.h>
 #include <CGAL/DF_L1_skeleton/internal/parallel_for.h>
 #include <CGAL/DF_L1_skeleton/internal/voxel_components.h>
 #include <CGAL/DF_L1_skeleton/internal/voxel_curve_graph.h>
@@ -605,6 +606,16 @@ void prune_spurs(Skeleton_graph<Traits>& g, double ratio, double voxel_size, dou
 ///   are joined, nearest first, by the path through those voxels that stays deepest: a
 ///   smoothed plate a few voxels thick, or a stretch of a noisy limb, may keep no voxel
 ///   deep enough for a curve, but the skeleton of a connected solid is connected;
+/// - with `thin_parts`, the thin limbs that the thinning lost get their branch back.
+///   Thinning in the order of depth eats a limb from its tip where the depth is flat (a
+///   twig two or three voxels wide is one plateau of quantized depth), and then no voxel
+///   of it is ever a curve end. A voxel of a thin part whose geodesic distance through the
+///   occupied voxels to every vertex exceeds 1.5 times the radius of that vertex by 4
+///   voxels plus twice `surface_noise` lies beyond what the balls of the skeleton
+///   explain: the farthest such voxel gets a branch, the path through the occupied voxels
+///   that keeps deepest from it to the graph less its surface layer, and so on until no
+///   such voxel is left. Thick parts are left alone: a hump, an ear or the flank of a
+///   partial scan also reaches beyond the balls of its curve, and is no limb;
 /// - with `occupied_depth` (our addition, for smoothed noisy clouds), the depth that the
 ///   ridge test, the thinning, the end test and the radii read is not the distance field
 ///   but the distance to the nearest unoccupied voxel less one, and the solid also takes
@@ -767,6 +778,9 @@ Initial_skeleton<Traits> extract_initial_skeleton(const Distance_field<Traits>& 
   if(skeleton_statistics(result.graph).components > 1)
     internal::join_pieces_within_shape(result.graph, field,
                                        thin.depth.empty() ? internal::occupied_depth(field) : thin.depth);
+  // The thin limbs that the thinning ate from their flat tips get their branches back.
+  if(has_thin)
+    internal::add_missing_branches(result.graph, field, thin.depth, thin.voxels, 4.0 + 2 * noise / voxel, 1.5);
   return result;
 }
 
