@@ -5,18 +5,15 @@
 
 #include <CGAL/DF_L1_skeleton/Skeleton_graph.h>
 #include <CGAL/DF_L1_skeleton/distance_field.h>
+#include <CGAL/DF_L1_skeleton/internal/deepest_path.h>
 #include <CGAL/DF_L1_skeleton/internal/voxel_components.h>
 
 #include <boost/graph/connected_components.hpp>
 
 #include <algorithm>
 #include <array>
-#include <cmath>
 #include <cstddef>
-#include <functional>
 #include <limits>
-#include <queue>
-#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -77,85 +74,44 @@ std::size_t join_pieces_within_shape(Skeleton_graph<Traits>& g, const Distance_f
       p = parent[std::size_t(p)] = parent[std::size_t(parent[std::size_t(p)])];
     return p;
   };
-  const double voxel = CGAL::to_double(field.voxel_size);
   std::size_t joins = 0;
-  std::vector<double> cost(field.size(), std::numeric_limits<double>::infinity());
-  std::vector<std::size_t> from(field.size());
-  std::vector<std::size_t> touched;
+  Deepest_path_search<Traits> search(field, depth);
   for(std::size_t c = 0; c < std::size_t(components); ++c)
   {
     const std::vector<int>& here = pieces_in[c];
     for(std::size_t join = 1; join < here.size(); ++join)
     {
       const int grown = root(here.front());
-      typedef std::pair<double, std::size_t> Entry;
-      std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue;
+      std::vector<std::size_t> seeds;
       for(vertex v = 0; v < boost::num_vertices(g); ++v)
         if(root(piece[v]) == grown)
-        {
-          cost[voxel_of[v]] = 0;
-          from[voxel_of[v]] = voxel_of[v];
-          touched.push_back(voxel_of[v]);
-          queue.push({0.0, voxel_of[v]});
-        }
-      std::size_t reached = std::numeric_limits<std::size_t>::max();
-      while(!queue.empty())
-      {
-        const Entry e = queue.top();
-        queue.pop();
-        if(e.first > cost[e.second])
-          continue;
-        const std::size_t at = vertex_at[e.second];
-        if(at != std::numeric_limits<std::size_t>::max() && root(piece[at]) != grown)
-        {
-          reached = e.second;
-          break;
-        }
-        const std::array<int, 3> a = field.coordinates(e.second);
-        for_each_neighbour_26(field, e.second, [&](std::size_t w) {
-          if(shape_component[w] != int(c))
-            return;
-          const std::array<int, 3> b = field.coordinates(w);
-          const double step = std::sqrt(double((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) +
-                                               (a[2] - b[2]) * (a[2] - b[2])));
-          const double next = e.first + step / (double(depth[w]) + 0.5);
-          if(next < cost[w])
-          {
-            if(cost[w] == std::numeric_limits<double>::infinity())
-              touched.push_back(w);
-            cost[w] = next;
-            from[w] = e.second;
-            queue.push({next, w});
-          }
+          seeds.push_back(voxel_of[v]);
+      const std::vector<std::size_t> path = search.find(
+        seeds, [&](std::size_t w) { return shape_component[w] == int(c); },
+        [&](std::size_t w) {
+          return vertex_at[w] != std::numeric_limits<std::size_t>::max() && root(piece[vertex_at[w]]) != grown;
         });
-      }
-      if(reached == std::numeric_limits<std::size_t>::max())
+      if(path.empty())
         break; // cannot happen within one component; stay safe
       // the path, from the reached piece back to the grown one, as new vertices
-      const int other = root(piece[vertex_at[reached]]);
-      vertex previous = vertex_at[reached];
-      for(std::size_t v = from[reached];; v = from[v])
+      const int other = root(piece[vertex_at[path.front()]]);
+      vertex previous = vertex_at[path.front()];
+      for(std::size_t i = 1; i < path.size(); ++i)
       {
+        const std::size_t v = path[i];
         vertex here_vertex = vertex_at[v];
         if(here_vertex == std::numeric_limits<std::size_t>::max())
         {
-          here_vertex = boost::add_vertex(g);
+          here_vertex = add_path_vertex(g, field, depth, v);
           piece.push_back(grown);
           voxel_of.push_back(v);
-          g[here_vertex].point = field.center(v);
-          g[here_vertex].radius = (std::max)(CGAL::to_double(field.distance(v)), (double(depth[v]) - 0.5) * voxel);
           vertex_at[v] = here_vertex;
         }
         boost::add_edge(previous, here_vertex, g);
         previous = here_vertex;
-        if(from[v] == v)
-          break;
       }
       parent[std::size_t(other)] = grown;
       ++joins;
-      for(std::size_t v : touched)
-        cost[v] = std::numeric_limits<double>::infinity();
-      touched.clear();
     }
   }
   return joins;

@@ -5,13 +5,12 @@
 
 #include <CGAL/DF_L1_skeleton/Skeleton_graph.h>
 #include <CGAL/DF_L1_skeleton/distance_field.h>
+#include <CGAL/DF_L1_skeleton/internal/deepest_path.h>
 #include <CGAL/DF_L1_skeleton/internal/voxel_components.h>
 
 #include <algorithm>
 #include <array>
-#include <cmath>
 #include <cstddef>
-#include <cstdlib>
 #include <functional>
 #include <limits>
 #include <queue>
@@ -56,11 +55,6 @@ std::size_t add_missing_branches(Skeleton_graph<Traits>& g, const Distance_field
     return 0;
   const double voxel = CGAL::to_double(field.voxel_size);
   auto occupied = [&](std::size_t v) { return Voxel_grid<Traits>::is_occupied(field.labels[v]); };
-  auto step_length = [&](std::size_t a, std::size_t b) {
-    const std::array<int, 3> p = field.coordinates(a), q = field.coordinates(b);
-    const int d = std::abs(p[0] - q[0]) + std::abs(p[1] - q[1]) + std::abs(p[2] - q[2]);
-    return d == 1 ? 1.0 : d == 2 ? std::sqrt(2.0) : std::sqrt(3.0);
-  };
 
   // A multi-source Dijkstra whose sources (voxel, radius in voxels) start at minus
   // their enlarged radius, lowering the excess where it can.
@@ -80,7 +74,7 @@ std::size_t add_missing_branches(Skeleton_graph<Traits>& g, const Distance_field
       if(e.first > excess[e.second])
         continue;
       for_each_neighbour_26(field, e.second, [&](std::size_t w) {
-        const double next = e.first + step_length(e.second, w);
+        const double next = e.first + neighbour_step(field, e.second, w);
         if(occupied(w) && next < excess[w])
         {
           excess[w] = next;
@@ -111,8 +105,7 @@ std::size_t add_missing_branches(Skeleton_graph<Traits>& g, const Distance_field
       candidates.push({excess[v], v});
 
   std::size_t added = 0;
-  std::vector<double> cost(field.size(), infinity);
-  std::vector<std::size_t> from(field.size(), none), touched;
+  Deepest_path_search<Traits> search(field, depth);
   while(!candidates.empty())
   {
     const Entry top = candidates.top();
@@ -125,47 +118,9 @@ std::size_t add_missing_branches(Skeleton_graph<Traits>& g, const Distance_field
       candidates.push({excess[tip], tip});
       continue;
     }
-    // the deepest path from the tip to the graph
-    Min_queue queue;
-    cost[tip] = 0;
-    from[tip] = tip;
-    touched.push_back(tip);
-    queue.push({0.0, tip});
-    std::size_t reached = none;
-    while(!queue.empty())
-    {
-      const Entry e = queue.top();
-      queue.pop();
-      if(e.first > cost[e.second])
-        continue;
-      if(vertex_at[e.second] != none)
-      {
-        reached = e.second;
-        break;
-      }
-      for_each_neighbour_26(field, e.second, [&](std::size_t w) {
-        const double next = e.first + step_length(e.second, w) / (double(depth[w]) + 0.5);
-        if(occupied(w) && next < cost[w])
-        {
-          if(cost[w] == infinity)
-            touched.push_back(w);
-          cost[w] = next;
-          from[w] = e.second;
-          queue.push({next, w});
-        }
-      });
-    }
-    std::vector<std::size_t> path; // from the graph to the tip
-    if(reached != none)
-      for(std::size_t v = reached;; v = from[v])
-      {
-        path.push_back(v);
-        if(from[v] == v)
-          break;
-      }
-    for(std::size_t v : touched)
-      cost[v] = infinity;
-    touched.clear();
+    // the deepest path from the tip to the graph, from the graph to the tip
+    std::vector<std::size_t> path = search.find(std::vector<std::size_t>(1, tip), occupied,
+                                                [&](std::size_t v) { return vertex_at[v] != none; });
     std::vector<std::pair<std::size_t, double>> shallow(1, {tip, 0.0}), new_sources;
     while(path.size() > 1 && double(depth[path.back()]) < min_depth)
     {
@@ -178,9 +133,7 @@ std::size_t add_missing_branches(Skeleton_graph<Traits>& g, const Distance_field
       for(std::size_t i = 1; i < path.size(); ++i)
       {
         const std::size_t v = path[i];
-        const vertex w = boost::add_vertex(g);
-        g[w].point = field.center(v);
-        g[w].radius = (std::max)(CGAL::to_double(field.distance(v)), (double(depth[v]) - 0.5) * voxel);
+        const vertex w = add_path_vertex(g, field, depth, v);
         boost::add_edge(previous, w, g);
         previous = w;
         vertex_at[v] = w;
