@@ -91,6 +91,12 @@ std::vector<char> on_cycle_vertices(const Graph& g)
 // (the pocket is thin); the widest gaps are cut first, each only while its vertex is
 // still on a cycle, so a cut never splits a component. `spacing` is the sampling spacing
 // (the median distance to the 6th nearest neighbour). Returns the number of cuts.
+// Where the web between two fused parts is thin (a radius of a voxel), the walls of a
+// thin part would be as near the line as the surfaces across a gap, and the test above
+// cannot tell them apart. A vertex in a neck between two much thicker parts (see
+// `thick_part_through`) is therefore also tested along the line that joins those parts,
+// without the distance test on the bounding points: inside one part that line runs
+// along its axis, and only a gap between two parts leaves an empty interval across it.
 template <class Traits>
 std::size_t cut_point_gaps(Skeleton_graph<Traits>& g, const std::vector<std::array<double, 3>>& xyz, const Uniform_grid& grid,
                            double voxel, double spacing)
@@ -119,6 +125,32 @@ std::size_t cut_point_gaps(Skeleton_graph<Traits>& g, const std::vector<std::arr
     }
     return current;
   };
+  // The vertex where the curve from v through its neighbour w, along vertices of degree
+  // 2, first reaches a part much thicker than v (radius R at least 2.5 times v's and 2.5
+  // voxels) within 2 R + 2 voxels of v; `none` if it does not. A curve between two
+  // parallel parts that the voxels fused crosses the web between them obliquely, within
+  // about a diameter of each part's axis.
+  const std::size_t none = std::size_t(-1);
+  auto thick_part_through = [&](std::size_t v, std::size_t w) -> std::size_t {
+    const double r = (std::max)(CGAL::to_double(g[v].radius), voxel);
+    const double thick = (std::max)(2.5 * r, 2.5 * voxel);
+    std::size_t previous = v, current = w;
+    double along_curve = 0;
+    for(;;)
+    {
+      const A a = pos(previous), b = pos(current);
+      along_curve += std::sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]));
+      const double R = CGAL::to_double(g[current].radius);
+      if(R >= thick && along_curve <= 2 * R + 2 * voxel)
+        return current;
+      if(along_curve > 12 * voxel || boost::degree(current, g) != 2 || current == v)
+        return none;
+      auto it = boost::adjacent_vertices(current, g).first;
+      const std::size_t n = *it == previous ? *(++it) : *it;
+      previous = current;
+      current = n;
+    }
+  };
   std::vector<std::pair<double, std::size_t>> candidates; // (minus the empty width, vertex)
   {
     const std::vector<char> cyclic = on_cycle_vertices(g);
@@ -133,21 +165,19 @@ std::size_t cut_point_gaps(Skeleton_graph<Traits>& g, const std::vector<std::arr
       }
     };
     std::vector<Near_point> along;
-    for(std::size_t v = 0; v < boost::num_vertices(g); ++v)
-    {
-      if(!cyclic[v] || boost::degree(v, g) != 2 ||
-         CGAL::to_double(g[v].radius) > max_radius)
-        continue;
-      auto it = boost::adjacent_vertices(v, g).first;
-      const std::size_t a = *it, b = *(++it);
-      const A p = pos(v), pa = pos(walk(v, a, 2)), pb = pos(walk(v, b, 2));
-      A t{{pb[0] - pa[0], pb[1] - pa[1], pb[2] - pa[2]}};
+    // The width of the empty interval that the points near the line through v along `t`
+    // leave near v, when it passes for a gap (0 otherwise). With `across_neck`, the line
+    // joins two thick parts through a neck, and the bounding points may lie anywhere in
+    // the disk: the surfaces that close the gap are those of the parts themselves.
+    auto gap_width = [&](std::size_t v, A t, bool across_neck) {
       const double tl = std::sqrt(t[0] * t[0] + t[1] * t[1] + t[2] * t[2]);
       if(!(tl > 0))
-        continue;
+        return 0.0;
       for(double& c : t)
         c /= tl;
-      const double disk = CGAL::to_double(g[v].radius) + voxel; // the surface around the curve
+      const A p = pos(v);
+      const double r = CGAL::to_double(g[v].radius);
+      const double disk = r + voxel; // the surface around the curve
       along.clear();
       grid.for_each_in_ball(p, std::sqrt(reach_along * reach_along + disk * disk), [&](std::size_t i, double d2) {
         const A d{{xyz[i][0] - p[0], xyz[i][1] - p[1], xyz[i][2] - p[2]}};
@@ -170,7 +200,7 @@ std::size_t cut_point_gaps(Skeleton_graph<Traits>& g, const std::vector<std::arr
           gap = k;
         }
       if(widest < min_gap)
-        continue;
+        return 0.0;
       // A curve that leaves a part crosses its surface: the points bounding the gap lie
       // near the line. Along a thin part, a sampling gap is bounded by the wall, as far
       // from the line as the local radius.
@@ -192,11 +222,33 @@ std::size_t cut_point_gaps(Skeleton_graph<Traits>& g, const std::vector<std::arr
         ++below;
       for(std::size_t k = gap + 1; k < along.size() && along[k].abscissa <= along[gap + 1].abscissa + widest; ++k)
         ++above;
-      const double r = CGAL::to_double(g[v].radius);
-      const bool dense_walls = (std::min)(below, above) >= dense_wall_points && offset < 0.7 * (std::max)(r, voxel);
+      const bool near_line = across_neck || offset < 0.7 * (std::max)(r, voxel);
+      const bool dense_walls = (std::min)(below, above) >= dense_wall_points && near_line;
       // the neighbour searches of the spacing test only where the walls did not decide
-      if(dense_walls || (widest >= min_width && offset < r && widest >= local_spacing(along[gap].point) &&
-                         widest >= local_spacing(along[gap + 1].point)))
+      const bool is_gap = dense_walls || (widest >= min_width && (across_neck || offset < r) &&
+                                          widest >= local_spacing(along[gap].point) &&
+                                          widest >= local_spacing(along[gap + 1].point));
+      return is_gap ? widest : 0.0;
+    };
+    for(std::size_t v = 0; v < boost::num_vertices(g); ++v)
+    {
+      if(!cyclic[v] || boost::degree(v, g) != 2 || CGAL::to_double(g[v].radius) > max_radius)
+        continue;
+      auto it = boost::adjacent_vertices(v, g).first;
+      const std::size_t a = *it, b = *(++it);
+      const A pa = pos(walk(v, a, 2)), pb = pos(walk(v, b, 2));
+      double widest = gap_width(v, A{{pb[0] - pa[0], pb[1] - pa[1], pb[2] - pa[2]}}, false);
+      if(!(widest > 0))
+      {
+        const std::size_t thick_a = thick_part_through(v, a);
+        const std::size_t thick_b = thick_a != none ? thick_part_through(v, b) : none;
+        if(thick_b != none)
+        {
+          const A qa = pos(thick_a), qb = pos(thick_b);
+          widest = gap_width(v, A{{qb[0] - qa[0], qb[1] - qa[1], qb[2] - qa[2]}}, true);
+        }
+      }
+      if(widest > 0)
         candidates.emplace_back(-widest, v);
     }
   }
