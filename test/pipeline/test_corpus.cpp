@@ -314,8 +314,9 @@ TEST_CASE("corpus: a ring whose ends come 1 to 2 voxels close is cut open, legs 
   // each other across the gap are denser than the gap is wide.
   for(int index : {0, 8})
     CHECK(run("close_parts", index, "outliers_3").cycles == 0);
-  // Where the web between the legs is a voxel thin, the line that joins the two legs
-  // through it shows the gap (the curve's own direction runs along the web).
+  // Where the web between the legs is a voxel thin, the points beside the gap lie a
+  // voxel from the curve's line, as a thin tube's walls would; the line that joins the
+  // two legs through the web shows the gap.
   for(int index : {4, 16})
     CHECK(run("close_parts", index, "clean").cycles == 0);
   for(int index = 0; index < 5; ++index) // rings, handles, frames and ladders, 1 to 5 cycles

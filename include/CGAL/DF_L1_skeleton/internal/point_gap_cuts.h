@@ -113,16 +113,21 @@ std::size_t cut_point_gaps(Skeleton_graph<Traits>& g, const std::vector<std::arr
   auto pos = [&](std::size_t v) {
     return A{{CGAL::to_double(g[v].point.x()), CGAL::to_double(g[v].point.y()), CGAL::to_double(g[v].point.z())}};
   };
+  auto distance = [](const A& a, const A& b) {
+    return std::sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]));
+  };
+  // one step along a curve: the neighbour of `current` (of degree 2) other than `previous`
+  auto step = [&](std::size_t& previous, std::size_t& current) {
+    auto it = boost::adjacent_vertices(current, g).first;
+    const std::size_t n = *it == previous ? *(++it) : *it;
+    previous = current;
+    current = n;
+  };
   // the vertex `hops` steps from v through its neighbour w, along vertices of degree 2
   auto walk = [&](std::size_t v, std::size_t w, int hops) {
     std::size_t previous = v, current = w;
     for(int h = 1; h < hops && boost::degree(current, g) == 2; ++h)
-    {
-      auto it = boost::adjacent_vertices(current, g).first;
-      const std::size_t n = *it == previous ? *(++it) : *it;
-      previous = current;
-      current = n;
-    }
+      step(previous, current);
     return current;
   };
   // The vertex where the curve from v through its neighbour w, along vertices of degree
@@ -138,17 +143,13 @@ std::size_t cut_point_gaps(Skeleton_graph<Traits>& g, const std::vector<std::arr
     double along_curve = 0;
     for(;;)
     {
-      const A a = pos(previous), b = pos(current);
-      along_curve += std::sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]));
+      along_curve += distance(pos(previous), pos(current));
       const double R = CGAL::to_double(g[current].radius);
       if(R >= thick && along_curve <= 2 * R + 2 * voxel)
         return current;
       if(along_curve > 12 * voxel || boost::degree(current, g) != 2 || current == v)
         return none;
-      auto it = boost::adjacent_vertices(current, g).first;
-      const std::size_t n = *it == previous ? *(++it) : *it;
-      previous = current;
-      current = n;
+      step(previous, current);
     }
   };
   std::vector<std::pair<double, std::size_t>> candidates; // (minus the empty width, vertex)
@@ -170,7 +171,7 @@ std::size_t cut_point_gaps(Skeleton_graph<Traits>& g, const std::vector<std::arr
     // joins two thick parts through a neck, and the bounding points may lie anywhere in
     // the disk: the surfaces that close the gap are those of the parts themselves.
     auto gap_width = [&](std::size_t v, A t, bool across_neck) {
-      const double tl = std::sqrt(t[0] * t[0] + t[1] * t[1] + t[2] * t[2]);
+      const double tl = distance(t, A{{0, 0, 0}});
       if(!(tl > 0))
         return 0.0;
       for(double& c : t)
