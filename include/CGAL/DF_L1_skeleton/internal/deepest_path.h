@@ -8,8 +8,6 @@
 #include <CGAL/DF_L1_skeleton/internal/voxel_components.h>
 
 #include <algorithm>
-#include <array>
-#include <cmath>
 #include <cstddef>
 #include <functional>
 #include <limits>
@@ -20,14 +18,6 @@
 namespace CGAL {
 namespace DF_L1 {
 namespace internal {
-
-// The length (voxels) of the step between two 26-neighbours a and b.
-template <class Traits>
-double neighbour_step(const Grid_geometry<Traits>& g, std::size_t a, std::size_t b)
-{
-  const std::array<int, 3> p = g.coordinates(a), q = g.coordinates(b);
-  return std::sqrt(double((p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) + (p[2] - q[2]) * (p[2] - q[2])));
-}
 
 // Adds a vertex of a path through the occupied voxels at the centre of voxel v; its
 // radius is the distance field there, or the depth in the occupied voxels less the half
@@ -84,10 +74,10 @@ public:
         reached = e.second;
         break;
       }
-      for_each_neighbour_26(*grid_, e.second, [&](std::size_t w) {
+      for_each_neighbour_26_step(*grid_, e.second, [&](std::size_t w, double step) {
         if(!passable(w))
           return;
-        const double next = e.first + neighbour_step(*grid_, e.second, w) / (double((*depth_)[w]) + 0.5);
+        const double next = e.first + step / (double((*depth_)[w]) + 0.5);
         if(next < cost_[w])
         {
           if(cost_[w] == infinity())

@@ -73,8 +73,8 @@ std::size_t add_missing_branches(Skeleton_graph<Traits>& g, const Distance_field
       queue.pop();
       if(e.first > excess[e.second])
         continue;
-      for_each_neighbour_26(field, e.second, [&](std::size_t w) {
-        const double next = e.first + neighbour_step(field, e.second, w);
+      for_each_neighbour_26_step(field, e.second, [&](std::size_t w, double step) {
+        const double next = e.first + step;
         if(occupied(w) && next < excess[w])
         {
           excess[w] = next;

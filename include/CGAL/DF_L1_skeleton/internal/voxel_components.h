@@ -6,6 +6,7 @@
 #include <CGAL/DF_L1_skeleton/Voxel_grid.h>
 
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <vector>
 
@@ -35,16 +36,25 @@ bool has_face_neighbour(const Grid_geometry<Traits>& g, std::size_t v, const Pre
   return found;
 }
 
-// Calls `f` on the linear index of each of the 26 neighbours of voxel v in the grid.
+// Calls `f(w, step)` on the linear index w of each of the 26 neighbours of voxel v in
+// the grid and the length of the step to it, in voxels (1, sqrt 2 or sqrt 3).
 template <class Traits, class F>
-void for_each_neighbour_26(const Grid_geometry<Traits>& g, std::size_t v, const F& f)
+void for_each_neighbour_26_step(const Grid_geometry<Traits>& g, std::size_t v, const F& f)
 {
+  static const double lengths[4] = {0.0, 1.0, std::sqrt(2.0), std::sqrt(3.0)};
   const std::array<int, 3> c = g.coordinates(v);
   for(int dk = -1; dk <= 1; ++dk)
     for(int dj = -1; dj <= 1; ++dj)
       for(int di = -1; di <= 1; ++di)
         if((di != 0 || dj != 0 || dk != 0) && g.contains(c[0] + di, c[1] + dj, c[2] + dk))
-          f(g.index(c[0] + di, c[1] + dj, c[2] + dk));
+          f(g.index(c[0] + di, c[1] + dj, c[2] + dk), lengths[di * di + dj * dj + dk * dk]);
+}
+
+// Calls `f` on the linear index of each of the 26 neighbours of voxel v in the grid.
+template <class Traits, class F>
+void for_each_neighbour_26(const Grid_geometry<Traits>& g, std::size_t v, const F& f)
+{
+  for_each_neighbour_26_step(g, v, [&](std::size_t w, double) { f(w); });
 }
 
 // The connected components of the voxels where `in_set(v)` holds, for the adjacency of
