@@ -57,26 +57,7 @@ struct Settings
   int threads = 0; // 0: all cores
   long seed = 0;
   bool quiet = false;
-  // Library parameters; NaN / -1 mean "derive from the input".
-  int voxel_resolution = 100;
-  double initial_voxel_size = NAN;
-  int exterior_propagation_steps = 1;
-  std::string denoise = "auto"; // auto, on or off
-  int denoising_neighbors = 24;
-  bool upsampling = true;
-  int upsampling_neighbors = 5;
-  double upsampling_radius = NAN;
-  int outlier_component_size = -1;
-  double thinning_coefficient = 0.86;
-  double spur_length_ratio = 1.0;
-  std::string method = "df_l1"; // df_l1 or l1
-  long samples = 1500;
-  double repulsion = 0.35;
-  double support_radius = NAN;
-  double support_growth = 0.5;
-  double branch_sigma = 0.9;
-  int iterations = 30;
-  int contraction_stages = 0; // 0: the method's default
+  DF::Parameters parameters; // the library's, set from the options of parameter_table()
 };
 
 double peak_memory_mib()
@@ -163,11 +144,12 @@ private:
   Json_object times_;
 };
 
+// The tool's own options, then one per library parameter (made from
+// DF::parameter_table(), under its canonical name and its earlier spellings).
 std::vector<df_l1_tool::Option> option_table(Settings& s, bool& help, bool& version)
 {
   using df_l1_tool::parse_integer;
-  using df_l1_tool::parse_number;
-  return {
+  std::vector<df_l1_tool::Option> table{
     {"stage", "STAGE", "final", "stop after this stage: voxels, distance, initial or final",
      [&](const std::string& v) {
        if(stage_index(v) < 0)
@@ -182,94 +164,50 @@ std::vector<df_l1_tool::Option> option_table(Settings& s, bool& help, bool& vers
      [&](const std::string&) { s.preview_stages = true; }},
     {"threads", "N", "all cores", "number of threads",
      [&](const std::string& v) { s.threads = int(parse_integer("threads", v, 1, 1024)); }},
-    {"seed", "S", "0", "random seed (the current stages are deterministic and draw no random numbers)",
+    {"seed", "S", "0", "random seed, written to the report (the stages are deterministic and draw no random numbers)",
      [&](const std::string& v) { s.seed = parse_integer("seed", v, 0, 2147483647L); }},
     {"quiet", "", "off", "no progress on stderr", [&](const std::string&) { s.quiet = true; }},
-    {"voxel-resolution", "V", "100", "voxels along the longest side of the bounding box, in [3, 2048]",
-     [&](const std::string& v) { s.voxel_resolution = int(parse_integer("voxel-resolution", v, 3, 2048)); }},
-    {"initial-voxel-size", "S0", "d_bb/9", "size of the coarsest voxels (input units), rounded down to V-grid",
-     [&](const std::string& v) {
-       s.initial_voxel_size = parse_number("initial-voxel-size", v);
-       if(!(s.initial_voxel_size > 0))
-         throw Usage_error("--initial-voxel-size must be positive");
-     }},
-    {"exterior-propagation-steps", "N", "1", "26-neighbour steps of the exterior per refinement level, in [1, 27]",
-     [&](const std::string& v) {
-       s.exterior_propagation_steps = int(parse_integer("exterior-propagation-steps", v, 1, 27));
-     }},
-    {"denoise", "MODE", "auto", "smooth the points onto local quadrics before voxelization: auto (when the estimated noise exceeds a fifth of a voxel), on or off",
-     [&](const std::string& v) {
-       if(v != "auto" && v != "on" && v != "off")
-         throw Usage_error("--denoise must be auto, on or off, got '" + v + "'");
-       s.denoise = v;
-     }},
-    {"denoising-neighbors", "K", "24", "neighbours of the local quadrics of the smoothing (the noise estimate uses 16), in [6, 256]",
-     [&](const std::string& v) { s.denoising_neighbors = int(parse_integer("denoising-neighbors", v, 6, 256)); }},
-    {"no-upsampling", "", "upsampling on", "do not upsample sparse regions",
-     [&](const std::string&) { s.upsampling = false; }},
-    {"upsampling-neighbors", "K", "5", "k of the density k/r^3 of the sparse-region test, in [1, 64]",
-     [&](const std::string& v) { s.upsampling_neighbors = int(parse_integer("upsampling-neighbors", v, 1, 64)); }},
-    {"upsampling-radius", "R", "3*d_bb/cbrt(N)", "r of the sparse-region test (input units)",
-     [&](const std::string& v) {
-       s.upsampling_radius = parse_number("upsampling-radius", v);
-       if(!(s.upsampling_radius > 0))
-         throw Usage_error("--upsampling-radius must be positive");
-     }},
-    {"outlier-component-size", "N", "max(3, V/10)", "largest extent in voxels of a removable outlier cluster",
-     [&](const std::string& v) {
-       s.outlier_component_size = int(parse_integer("outlier-component-size", v, 0, 1 << 20));
-     }},
-    {"thinning-coefficient", "C", "0.86", "c of the thinning thresholds TP_k, in (0, 10]",
-     [&](const std::string& v) {
-       s.thinning_coefficient = parse_number("thinning-coefficient", v);
-       if(!(s.thinning_coefficient > 0 && s.thinning_coefficient <= 10))
-         throw Usage_error("--thinning-coefficient must be in (0, 10]");
-     }},
-    {"spur-length-ratio", "X", "1", "prune initial-skeleton spurs shorter than X times the local radius",
-     [&](const std::string& v) {
-       s.spur_length_ratio = parse_number("spur-length-ratio", v);
-       if(!(s.spur_length_ratio >= 0))
-         throw Usage_error("--spur-length-ratio must not be negative");
-     }},
-    {"method", "METHOD", "df_l1", "refinement: df_l1 (distance-field guided) or l1 (plain L1-medial skeleton)",
-     [&](const std::string& v) {
-       if(v != "df_l1" && v != "l1")
-         throw Usage_error("--method must be df_l1 or l1, got '" + v + "'");
-       s.method = v;
-     }},
-    {"samples", "M", "1500", "samples contracted (at most the points), in [1, 100000000]",
-     [&](const std::string& v) { s.samples = parse_integer("samples", v, 1, 100000000L); }},
-    {"repulsion", "U", "0.35", "u, weight of the repulsion between samples, in [0, 0.5)",
-     [&](const std::string& v) {
-       s.repulsion = parse_number("repulsion", v);
-       if(!(s.repulsion >= 0 && s.repulsion < 0.5))
-         throw Usage_error("--repulsion must be in [0, 0.5), got " + v);
-     }},
-    {"support-radius", "H0", "2*d_bb/cbrt(N)", "h0, initial support radius of the contraction (input units)",
-     [&](const std::string& v) {
-       s.support_radius = parse_number("support-radius", v);
-       if(!(s.support_radius > 0))
-         throw Usage_error("--support-radius must be positive, got " + v);
-     }},
-    {"support-growth", "R", "0.5", "growth of the support radius between stages, h <- (1+R) h, in (0, 4]",
-     [&](const std::string& v) {
-       s.support_growth = parse_number("support-growth", v);
-       if(!(s.support_growth > 0 && s.support_growth <= 4))
-         throw Usage_error("--support-growth must be in (0, 4], got " + v);
-     }},
-    {"branch-sigma", "S", "0.9", "directionality above which a sample may become a branch point, in (1/3, 1)",
-     [&](const std::string& v) {
-       s.branch_sigma = parse_number("branch-sigma", v);
-       if(!(s.branch_sigma > 1.0 / 3 && s.branch_sigma < 1))
-         throw Usage_error("--branch-sigma must be in (1/3, 1), got " + v);
-     }},
-    {"iterations", "N", "30", "maximum iterations per support-radius stage of the contraction, in [1, 10000]",
-     [&](const std::string& v) { s.iterations = int(parse_integer("iterations", v, 1, 10000)); }},
-    {"contraction-stages", "N", "64", "maximum support-radius stages of the contraction, in [1, 64]",
-     [&](const std::string& v) { s.contraction_stages = int(parse_integer("contraction-stages", v, 1, 64)); }},
-    {"help", "", "", "show this help", [&](const std::string&) { help = true; }},
-    {"version", "", "", "show the version", [&](const std::string&) { version = true; }},
   };
+  for(const DF::Parameter_info& info : DF::parameter_table())
+  {
+    const std::string name = info.name;
+    std::string help = info.help;
+    if(info.kind == DF::Parameter_kind::INTEGER || info.kind == DF::Parameter_kind::REAL)
+    {
+      const std::string range = info.range_text();
+      if(range != "(0, inf)" && range != "[0, inf)")
+        help += ", in " + range;
+    }
+    std::string also;
+    for(const DF::Option_alias& alias : info.aliases)
+      if(alias.option)
+        also += std::string(also.empty() ? "" : ", ") + "--" + alias.option + (alias.value ? "" : std::string(" ") + info.argument);
+    if(!also.empty())
+      help += "; also " + also;
+    const auto set = [&s, name](const std::string& option, const std::string& value) {
+      try
+      {
+        DF::set_parameter(s.parameters, name, value);
+      }
+      catch(const DF::Invalid_input& e)
+      {
+        throw Usage_error("--" + option + ": " + e.what());
+      }
+    };
+    const std::string option = info.option();
+    table.push_back({option, info.argument, info.default_text, help, [set, option](const std::string& v) { set(option, v); }});
+    for(const DF::Option_alias& alias : info.aliases)
+      if(alias.option)
+      {
+        const std::string old = alias.option;
+        const std::string fixed = alias.value ? alias.value : "";
+        table.push_back({old, alias.value ? "" : info.argument, "", "",
+                         [set, old, fixed](const std::string& v) { set(old, fixed.empty() ? v : fixed); }});
+      }
+  }
+  table.push_back({"help", "", "", "show this help", [&](const std::string&) { help = true; }});
+  table.push_back({"version", "", "", "show the version", [&](const std::string&) { version = true; }});
+  return table;
 }
 
 void print_help(const std::vector<df_l1_tool::Option>& table)
@@ -289,6 +227,8 @@ void print_help(const std::vector<df_l1_tool::Option>& table)
                "options:\n";
   for(const df_l1_tool::Option& o : table)
   {
+    if(o.help.empty()) // an earlier spelling, listed with its option
+      continue;
     std::string left = "  --" + o.name + (o.argument.empty() ? "" : " " + o.argument);
     left.resize((std::max)(left.size() + 1, std::size_t(36)), ' ');
     std::cout << left << o.help;
@@ -340,43 +280,11 @@ int run(const Settings& s)
   const auto cloud = clock.run("read", [&] { return DF::read_point_cloud<Kernel>(s.input); });
   const std::vector<Point_3>& points = cloud.points;
 
-  // The library resolves the derived defaults; the report states what it used.
+  // The library resolves the derived defaults; the report states what it used. The
+  // resolution goes to the constructor, whose test of flat input depends on it.
   typedef CGAL::DF_L1_skeletonization<Kernel> Skeletonization;
-  const DF::Skeletonization_method method =
-    s.method == "l1" ? DF::Skeletonization_method::L1_MEDIAL : DF::Skeletonization_method::DISTANCE_FIELD_GUIDED;
-  // number_of_samples and number_of_iterations are CGAL's (member functions), the others ours.
-  const DF::Denoising denoising =
-    s.denoise == "on" ? DF::Denoising::ALWAYS : s.denoise == "off" ? DF::Denoising::NEVER : DF::Denoising::AUTOMATIC;
-  const auto np =
-    params::denoising(denoising,
-    params::denoising_neighbors(s.denoising_neighbors,
-    params::voxel_resolution(s.voxel_resolution,
-    params::exterior_propagation_steps(s.exterior_propagation_steps,
-    params::upsampling(s.upsampling,
-    params::upsampling_neighbors(s.upsampling_neighbors,
-    params::thinning_coefficient(s.thinning_coefficient,
-    params::spur_length_ratio(s.spur_length_ratio,
-    params::skeletonization_method(method,
-    params::repulsion_coefficient(s.repulsion,
-    params::support_radius_growth(s.support_growth,
-    params::branch_directionality(s.branch_sigma,
-    params::number_of_iterations(s.iterations).number_of_samples(std::size_t(s.samples))))))))))))));
-  // h0 and the number of stages have no setter and their defaults are derived (from the
-  // points, from the method), so they can only be given at construction.
-  const auto make = [&](const auto& with_stages) {
-    return std::isnan(s.support_radius)
-             ? std::make_unique<Skeletonization>(points, with_stages)
-             : std::make_unique<Skeletonization>(points, params::initial_support_radius(s.support_radius, with_stages));
-  };
-  const std::unique_ptr<Skeletonization> owner =
-    s.contraction_stages > 0 ? make(params::contraction_stages(s.contraction_stages, np)) : make(np);
-  Skeletonization& skeletonization = *owner;
-  if(!std::isnan(s.initial_voxel_size))
-    skeletonization.set_initial_voxel_size(s.initial_voxel_size);
-  if(!std::isnan(s.upsampling_radius))
-    skeletonization.set_upsampling_radius(s.upsampling_radius);
-  if(s.outlier_component_size >= 0)
-    skeletonization.set_outlier_component_size(s.outlier_component_size);
+  Skeletonization skeletonization(points, params::voxel_resolution(s.parameters.voxel_resolution));
+  skeletonization.set_parameters(s.parameters);
   const auto stage = [&](const char* name, void (Skeletonization::*f)()) {
     clock.run(name, [&] {
       (skeletonization.*f)();
@@ -386,7 +294,7 @@ int run(const Settings& s)
   // Scattered outliers go before voxelization; the voxel test catches the clusters.
   stage("outlier_points", &Skeletonization::flag_outliers);
   stage("denoising", &Skeletonization::denoise);
-  if(s.upsampling)
+  if(skeletonization.upsampling())
     stage("upsampling", &Skeletonization::upsample);
   stage("voxelization", &Skeletonization::voxelize);
   stage("outliers", &Skeletonization::remove_outlier_voxels);
@@ -405,7 +313,7 @@ int run(const Settings& s)
     initial = &skeletonization.initial_skeleton();
     if(boost::num_vertices(initial->graph) == 0)
       throw DF::Invalid_input(s.input + ": no skeleton: the points enclose no volume at voxel resolution " +
-                              std::to_string(s.voxel_resolution) +
+                              std::to_string(skeletonization.voxel_resolution()) +
                               " (flat, linear or too sparse input; try --stage voxels to look at the voxels)");
   }
   const DF::Contracted_samples<Kernel>* contracted = nullptr;
@@ -432,7 +340,7 @@ int run(const Settings& s)
     {
       std::vector<DF::Preview_panel<Kernel>> rows;
       if(final_skeleton)
-        rows.push_back({s.method == "l1" ? "final skeleton (l1)" : "final skeleton (df_l1)", final_skeleton});
+        rows.push_back({"final skeleton (" + DF::parameter_text(s.parameters, "skeletonization_method") + ")", final_skeleton});
       if(initial && (!final_skeleton || s.preview_stages))
         rows.push_back({"initial skeleton", &initial->graph});
       DF::Preview_options options;
@@ -453,7 +361,7 @@ int run(const Settings& s)
       .number("threads", s.threads > 0 ? s.threads : double(tbb::this_task_arena::max_concurrency()))
       .number("seed", double(s.seed))
       .number("bbox_diagonal", skeletonization.bbox_diagonal())
-      .text("denoising", s.denoise)
+      .text("denoising", DF::parameter_text(s.parameters, "denoising"))
       .number("denoising_neighbors", skeletonization.denoising_neighbors())
       .boolean("upsampling", skeletonization.upsampling())
       .number("upsampling_neighbors", skeletonization.upsampling_neighbors())
@@ -472,7 +380,7 @@ int run(const Settings& s)
                                      std::to_string(initial->thinning_parameters[2] * voxel_size) + "]")
         .number("spur_length_ratio", skeletonization.spur_length_ratio());
     if(contracted)
-      parameters.text("method", s.method)
+      parameters.text("method", DF::parameter_text(s.parameters, "skeletonization_method"))
         .number("number_of_samples", double(skeletonization.number_of_samples()))
         .number("repulsion_coefficient", skeletonization.repulsion_coefficient())
         .number("initial_support_radius", skeletonization.initial_support_radius())

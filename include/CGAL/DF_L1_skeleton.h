@@ -7,6 +7,7 @@
 /// The public entry of the package: the `DF_L1_skeletonization` class, which runs the
 /// stages of the method one by one and keeps every intermediate result.
 
+#include <CGAL/DF_L1_skeleton/Parameters.h>
 #include <CGAL/DF_L1_skeleton/Skeleton_graph.h>
 #include <CGAL/DF_L1_skeleton/assign_points_to_skeleton.h>
 #include <CGAL/DF_L1_skeleton/build_skeleton_graph.h>
@@ -30,6 +31,7 @@
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/tags.h>
 
+#include <algorithm>
 #include <cmath>
 #include <iterator>
 #include <memory>
@@ -90,8 +92,6 @@ public:
   template <class PointRange, class NamedParameters = parameters::Default_named_parameters>
   explicit DF_L1_skeletonization(const PointRange& points, const NamedParameters& np = parameters::default_values())
   {
-    using parameters::choose_parameter;
-    using parameters::get_parameter;
     typedef Point_set_processing_3_np_helper<const PointRange, NamedParameters> NP_helper;
     const auto point_map = NP_helper::get_const_point_map(points, np);
     for(const auto& p : points)
@@ -101,37 +101,8 @@ public:
       throw DF_L1::Invalid_input(std::string(stage_name) + ": all " + std::to_string(points_.size()) +
                                  " points coincide; there is no shape to skeletonize");
     diagonal_ = DF_L1::internal::diagonal(box);
-
-    voxel_resolution_ = DF_L1::internal::voxel_resolution(np, stage_name);
-    check_volume(DF_L1::internal::longest_side(box) / voxel_resolution_);
-    initial_voxel_size_ = DF_L1::internal::initial_voxel_size(np, diagonal_, stage_name);
-    exterior_propagation_steps_ = DF_L1::internal::exterior_propagation_steps(np, stage_name);
-    denoising_ = DF_L1::internal::denoising(np);
-    denoising_neighbors_ = DF_L1::internal::denoising_neighbors(np, stage_name);
-    upsampling_ = choose_parameter(get_parameter(np, internal_np::df_l1_upsampling), true);
-    upsampling_neighbors_ = DF_L1::internal::upsampling_neighbors(np, stage_name);
-    upsampling_radius_ = DF_L1::internal::upsampling_radius(np, diagonal_, points_.size(), stage_name);
-    // The default of the outlier size derives from the grid, known after voxelization.
-    outlier_component_size_set_ =
-      !parameters::is_default_parameter<NamedParameters, internal_np::df_l1_outlier_component_size_t>::value;
-    if(outlier_component_size_set_)
-      outlier_component_size_ = DF_L1::internal::check_outlier_component_size(
-        choose_parameter(get_parameter(np, internal_np::df_l1_outlier_component_size), 0), stage_name);
-    thinning_coefficient_ = DF_L1::internal::thinning_coefficient(np, stage_name);
-    spur_length_ratio_ = DF_L1::internal::spur_length_ratio(np, stage_name);
-    method_ = DF_L1::internal::skeletonization_method(np);
-    number_of_samples_ = parameters::choose_parameter(parameters::get_parameter(np, internal_np::number_of_samples), std::size_t(1500));
-    DF_L1::internal::number_of_samples(np, points_.size(), stage_name); // range check
-    repulsion_coefficient_ = DF_L1::internal::repulsion_coefficient(np, stage_name);
-    initial_support_radius_set_ =
-      !parameters::is_default_parameter<NamedParameters, internal_np::df_l1_support_radius_t>::value;
-    if(initial_support_radius_set_)
-      initial_support_radius_ = DF_L1::internal::check_initial_support_radius(
-        choose_parameter(get_parameter(np, internal_np::df_l1_support_radius), 1.0), stage_name);
-    support_radius_growth_ = DF_L1::internal::support_radius_growth(np, stage_name);
-    branch_directionality_ = DF_L1::internal::branch_directionality(np, stage_name);
-    iterations_per_stage_ = DF_L1::internal::iterations_per_stage(np, stage_name);
-    contraction_stages_ = DF_L1::internal::contraction_stages(np, stage_name);
+    parameters_ = DF_L1::internal::resolve_parameters(np, stage_name);
+    check_volume(DF_L1::internal::longest_side(box) / parameters_.voxel_resolution);
   }
 
   /// \name Stages
@@ -174,12 +145,12 @@ public:
     const DF_L1::internal::Local_quadric_fitter<Traits> fitter(kept_points_);
     surface_noise_ = DF_L1::internal::surface_noise<ConcurrencyTag>(fitter);
     const double finest_voxel = DF_L1::internal::longest_side(
-      CGAL::bbox_3(points_.begin(), points_.end())) / voxel_resolution_;
-    const bool noisy = denoising_ == DF_L1::Denoising::AUTOMATIC && surface_noise_ > 0.2 * finest_voxel;
+      CGAL::bbox_3(points_.begin(), points_.end())) / parameters_.voxel_resolution;
+    const bool noisy = parameters_.denoising == DF_L1::Denoising::AUTOMATIC && surface_noise_ > 0.2 * finest_voxel;
     residual_growth_ = noisy ? DF_L1::internal::residual_growth<ConcurrencyTag>(fitter) : 0.0;
-    denoised_ = denoising_ == DF_L1::Denoising::ALWAYS || (noisy && residual_growth_ < 3);
+    denoised_ = parameters_.denoising == DF_L1::Denoising::ALWAYS || (noisy && residual_growth_ < 3);
     if(denoised_)
-      kept_points_ = DF_L1::internal::smoothed_points<ConcurrencyTag>(fitter, kept_points_, denoising_neighbors_);
+      kept_points_ = DF_L1::internal::smoothed_points<ConcurrencyTag>(fitter, kept_points_, unsigned(parameters_.denoising_neighbors));
     denoise_checked_ = true;
   }
 
@@ -190,13 +161,13 @@ public:
     if(upsampled_)
       return;
     denoise();
-    if(upsampling_)
+    if(parameters_.upsampling)
     {
       DF_L1::upsample_sparse_regions<ConcurrencyTag>(
         kept_points_, std::back_inserter(added_points_),
-        parameters::upsampling_neighbors(upsampling_neighbors_,
-        parameters::upsampling_radius(upsampling_radius_,
-        parameters::voxel_resolution(voxel_resolution_))));
+        parameters::upsampling_neighbors(parameters_.upsampling_neighbors,
+        parameters::upsampling_radius(upsampling_radius(),
+        parameters::voxel_resolution(parameters_.voxel_resolution))));
     }
     upsampled_ = true;
   }
@@ -209,9 +180,9 @@ public:
       return;
     upsample();
     raw_grid_ = std::make_unique<Voxel_grid>(DF_L1::voxelize_point_set<ConcurrencyTag>(
-      kept_and_added_points(), parameters::voxel_resolution(voxel_resolution_,
-           parameters::initial_voxel_size(initial_voxel_size_,
-           parameters::exterior_propagation_steps(exterior_propagation_steps_,
+      kept_and_added_points(), parameters::voxel_resolution(parameters_.voxel_resolution,
+           parameters::initial_voxel_size(initial_voxel_size(),
+           parameters::exterior_propagation_steps(parameters_.exterior_propagation_steps,
            parameters::open_crotches(!denoised_))))));
   }
 
@@ -221,11 +192,8 @@ public:
     if(grid_)
       return;
     voxelize();
-    if(!outlier_component_size_set_)
-      outlier_component_size_ =
-        DF_L1::internal::outlier_component_size(parameters::default_values(), raw_grid_->dims, stage_name);
     grid_ = std::make_unique<Voxel_grid>(DF_L1::remove_outlier_voxels(
-      *raw_grid_, parameters::outlier_component_size(outlier_component_size_), &outlier_voxel_statistics_));
+      *raw_grid_, parameters::outlier_component_size(resolved_outlier_component_size()), &outlier_voxel_statistics_));
     outliers_ = DF_L1::flag_outlier_points(points_, *grid_);
     outlier_count_ = 0;
     for(std::size_t i = 0; i < points_.size(); ++i)
@@ -254,8 +222,8 @@ public:
       return;
     compute_distance_field();
     initial_ = std::make_unique<Initial_skeleton>(DF_L1::extract_initial_skeleton(
-      *field_, parameters::thinning_coefficient(thinning_coefficient_,
-               parameters::spur_length_ratio(spur_length_ratio_, parameters::thin_parts(!denoised_, parameters::occupied_depth(denoised_,
+      *field_, parameters::thinning_coefficient(parameters_.thinning_coefficient,
+               parameters::spur_length_ratio(parameters_.spur_length_ratio, parameters::thin_parts(!denoised_, parameters::occupied_depth(denoised_,
                parameters::surface_noise(surface_noise_)))))));
     // The cycles through gaps between parts that the voxels could not separate are cut
     // where the points show the gap (`internal::cut_point_gaps()`); the stubs that are
@@ -268,7 +236,7 @@ public:
       const DF_L1::internal::Uniform_grid grid(xyz, 2 * voxel);
       const double spacing = DF_L1::internal::median_kth_neighbour_distance(xyz, 6, voxel / 2, grid);
       if(DF_L1::internal::cut_point_gaps(initial_->graph, xyz, grid, voxel, spacing) > 0)
-        DF_L1::internal::prune_spurs(initial_->graph, spur_length_ratio_, voxel, surface_noise_);
+        DF_L1::internal::prune_spurs(initial_->graph, parameters_.spur_length_ratio, voxel, surface_noise_);
     }
     DF_L1::assign_points_to_skeleton<ConcurrencyTag>(points_, outliers_, initial_->graph);
   }
@@ -283,13 +251,13 @@ public:
     const std::vector<Point> all = kept_and_added_points();
     contracted_ = std::make_unique<Contracted_samples>(DF_L1::contract_samples<ConcurrencyTag>(
       all, *field_, *initial_,
-      parameters::skeletonization_method(method_,
-      parameters::repulsion_coefficient(repulsion_coefficient_,
+      parameters::skeletonization_method(parameters_.skeletonization_method,
+      parameters::repulsion_coefficient(parameters_.repulsion_coefficient,
       parameters::initial_support_radius(resolved_initial_support_radius(),
-      parameters::support_radius_growth(support_radius_growth_,
-      parameters::branch_directionality(branch_directionality_,
-      parameters::contraction_stages(contraction_stages_,
-      parameters::number_of_iterations(iterations_per_stage_).number_of_samples(number_of_samples_)))))))));
+      parameters::support_radius_growth(parameters_.support_radius_growth,
+      parameters::branch_directionality(parameters_.branch_directionality,
+      parameters::contraction_stages(parameters_.contraction_stages,
+      parameters::number_of_iterations(parameters_.number_of_iterations).number_of_samples(parameters_.number_of_samples)))))))));
   }
 
   /// Builds the final skeleton from the contracted samples (`build_skeleton_graph()`)
@@ -348,85 +316,148 @@ public:
   const Skeleton& skeleton() { convert_to_skeleton(); return *skeleton_; }
   /// @}
 
-  /// \name Parameters in use
-  /// Derived defaults are resolved: these are the values the stages use.
+  /// \name Parameters
+  /// The getters return the values the stages use: the derived defaults are resolved
+  /// (which runs the stages they derive from). Each setter checks its value (throwing
+  /// `DF_L1::Invalid_input` out of range, as the constructor does) and discards the
+  /// results of the stages that depend on it; the next stage function recomputes them.
   /// @{
-  double bbox_diagonal() const { return diagonal_; }                      ///< d_bb
-  int voxel_resolution() const { return voxel_resolution_; }              ///< V
-  double initial_voxel_size() const { return initial_voxel_size_; }       ///< s0 before rounding
-  int exterior_propagation_steps() const { return exterior_propagation_steps_; } ///< exterior steps per level
-  DF_L1::Denoising denoising() const { return denoising_; } ///< when the points are smoothed
-  unsigned int denoising_neighbors() const { return denoising_neighbors_; } ///< k of the local quadrics
-  bool upsampling() const { return upsampling_; } ///< whether sparse regions are upsampled
-  int upsampling_neighbors() const { return upsampling_neighbors_; } ///< k of the density test
-  double upsampling_radius() const { return upsampling_radius_; } ///< r of the density test
-  /// the largest extent of a removable outlier cluster, in voxels (derived from the grid
-  /// once the voxels exist)
-  int outlier_component_size() { remove_outlier_voxels(); return outlier_component_size_; }
-  double thinning_coefficient() const { return thinning_coefficient_; } ///< c of Eq. 2
-  double spur_length_ratio() const { return spur_length_ratio_; } ///< spur pruning of the initial graph
-  DF_L1::Skeletonization_method skeletonization_method() const { return method_; } ///< refinement method
-  std::size_t number_of_samples() const { return number_of_samples_; } ///< M requested (at most the points are used)
-  double repulsion_coefficient() const { return repulsion_coefficient_; } ///< u of Eq. 8
-  /// h0, the initial support radius (input units; derived from the kept and added points
-  /// once they are known)
+  double bbox_diagonal() const { return diagonal_; } ///< d_bb
+  /// the parameters as given (derived lengths left empty when they were not set)
+  const DF_L1::Parameters& parameters() const { return parameters_; }
+  /// sets every parameter at once, discarding the results from the first stage whose
+  /// parameters changed
+  void set_parameters(const DF_L1::Parameters& p)
+  {
+    DF_L1::check_parameters(p, stage_name);
+    if(p.voxel_resolution != parameters_.voxel_resolution)
+      check_volume(DF_L1::internal::longest_side(CGAL::bbox_3(points_.begin(), points_.end())) / p.voxel_resolution);
+    int first = number_of_stages;
+    for(const DF_L1::Parameter_info& info : DF_L1::parameter_table())
+    {
+      const bool given_before = info.given == nullptr || info.given(parameters_);
+      const bool given_after = info.given == nullptr || info.given(p);
+      if(given_before != given_after || (given_after && info.read(parameters_) != info.read(p)))
+        first = (std::min)(first, stage_index(info.stage));
+    }
+    parameters_ = p;
+    discard_from(first);
+  }
+
+  DF_L1::Denoising denoising() const { return parameters_.denoising; } ///< when the points are smoothed
+  void set_denoising(DF_L1::Denoising d) { set([&](DF_L1::Parameters& p) { p.denoising = d; }); } ///< \sa `denoising()`
+  unsigned int denoising_neighbors() const { return unsigned(parameters_.denoising_neighbors); } ///< k of the local quadrics
+  void set_denoising_neighbors(int k) { set([&](DF_L1::Parameters& p) { p.denoising_neighbors = k; }); } ///< \sa `denoising_neighbors()`
+  bool upsampling() const { return parameters_.upsampling; } ///< whether sparse regions are upsampled
+  void set_upsampling(bool on) { set([&](DF_L1::Parameters& p) { p.upsampling = on; }); } ///< \sa `upsampling()`
+  int upsampling_neighbors() const { return parameters_.upsampling_neighbors; } ///< k of the density test
+  void set_upsampling_neighbors(int k) { set([&](DF_L1::Parameters& p) { p.upsampling_neighbors = k; }); } ///< \sa `upsampling_neighbors()`
+  /// r of the density test (input units; default 3 d_bb / cbrt(N), N the input points)
+  double upsampling_radius() const
+  {
+    return parameters_.upsampling_radius ? *parameters_.upsampling_radius
+                                         : DF_L1::internal::upsampling_radius(parameters::default_values(), diagonal_,
+                                                                              points_.size(), stage_name);
+  }
+  void set_upsampling_radius(double r) { set([&](DF_L1::Parameters& p) { p.upsampling_radius = r; }); } ///< \sa `upsampling_radius()`
+  int voxel_resolution() const { return parameters_.voxel_resolution; } ///< V
+  void set_voxel_resolution(int V) { set([&](DF_L1::Parameters& p) { p.voxel_resolution = V; }); } ///< \sa `voxel_resolution()`
+  /// s0, the size of the coarsest voxels before rounding (input units; default d_bb / 9)
+  double initial_voxel_size() const { return parameters_.initial_voxel_size ? *parameters_.initial_voxel_size : diagonal_ / 9; }
+  void set_initial_voxel_size(double s0) { set([&](DF_L1::Parameters& p) { p.initial_voxel_size = s0; }); } ///< \sa `initial_voxel_size()`
+  int exterior_propagation_steps() const { return parameters_.exterior_propagation_steps; } ///< exterior steps per level
+  /// \sa `exterior_propagation_steps()`
+  void set_exterior_propagation_steps(int n) { set([&](DF_L1::Parameters& p) { p.exterior_propagation_steps = n; }); }
+  /// the largest extent of a removable outlier cluster, in voxels (default max(3, V'/10),
+  /// V' the longest side of the grid, known once the voxels exist)
+  int outlier_component_size() { voxelize(); return resolved_outlier_component_size(); }
+  /// \sa `outlier_component_size()`
+  void set_outlier_component_size(int voxels) { set([&](DF_L1::Parameters& p) { p.outlier_component_size = voxels; }); }
+  double thinning_coefficient() const { return parameters_.thinning_coefficient; } ///< c of Eq. 2
+  void set_thinning_coefficient(double c) { set([&](DF_L1::Parameters& p) { p.thinning_coefficient = c; }); } ///< \sa `thinning_coefficient()`
+  double spur_length_ratio() const { return parameters_.spur_length_ratio; } ///< spur pruning of the initial graph
+  void set_spur_length_ratio(double x) { set([&](DF_L1::Parameters& p) { p.spur_length_ratio = x; }); } ///< \sa `spur_length_ratio()`
+  DF_L1::Skeletonization_method skeletonization_method() const { return parameters_.skeletonization_method; } ///< refinement method
+  /// \sa `skeletonization_method()`
+  void set_skeletonization_method(DF_L1::Skeletonization_method m) { set([&](DF_L1::Parameters& p) { p.skeletonization_method = m; }); }
+  std::size_t number_of_samples() const { return parameters_.number_of_samples; } ///< M requested (at most the points are used)
+  void set_number_of_samples(std::size_t m) { set([&](DF_L1::Parameters& p) { p.number_of_samples = m; }); } ///< \sa `number_of_samples()`
+  double repulsion_coefficient() const { return parameters_.repulsion_coefficient; } ///< u of Eq. 8
+  void set_repulsion_coefficient(double u) { set([&](DF_L1::Parameters& p) { p.repulsion_coefficient = u; }); } ///< \sa `repulsion_coefficient()`
+  /// h0, the initial support radius (input units; default 2 d_bb / cbrt(N), N the kept
+  /// and added points, known once upsampled)
   double initial_support_radius() { upsample(); return resolved_initial_support_radius(); }
-  double support_radius_growth() const { return support_radius_growth_; } ///< growth ratio of h between stages
-  double branch_directionality() const { return branch_directionality_; } ///< sigma threshold of branch points
-  int number_of_iterations() const { return iterations_per_stage_; } ///< maximum iterations per stage
-  int contraction_stages() const { return contraction_stages_; } ///< maximum support-radius stages
-  /// @}
-
-  /// \name Setting derived parameters
-  /// Each discards the results of the stages that depend on the parameter.
-  /// @{
-
-  /// sets s0, the size of the coarsest voxels before rounding (input units)
-  void set_initial_voxel_size(double s0)
-  {
-    initial_voxel_size_ = DF_L1::internal::check_initial_voxel_size(s0, stage_name);
-    discard_from_voxelization();
-  }
-  /// sets r, the radius of the density test of the upsampling (input units)
-  void set_upsampling_radius(double r)
-  {
-    upsampling_radius_ = DF_L1::internal::check_upsampling_radius(r, stage_name);
-    upsampled_ = false;
-    added_points_.clear();
-    discard_from_voxelization();
-  }
-  /// sets h0, the initial support radius of the contraction (input units)
-  void set_initial_support_radius(double h)
-  {
-    initial_support_radius_ = DF_L1::internal::check_initial_support_radius(h, stage_name);
-    initial_support_radius_set_ = true;
-    contracted_.reset();
-    skeleton_.reset();
-  }
-  /// sets the largest extent of a removable outlier cluster, in voxels
-  void set_outlier_component_size(int voxels)
-  {
-    outlier_component_size_ = DF_L1::internal::check_outlier_component_size(voxels, stage_name);
-    outlier_component_size_set_ = true;
-    grid_.reset();
-    field_.reset();
-    initial_.reset();
-    contracted_.reset();
-    skeleton_.reset();
-  }
+  void set_initial_support_radius(double h) { set([&](DF_L1::Parameters& p) { p.initial_support_radius = h; }); } ///< \sa `initial_support_radius()`
+  double support_radius_growth() const { return parameters_.support_radius_growth; } ///< growth ratio of h between stages
+  void set_support_radius_growth(double r) { set([&](DF_L1::Parameters& p) { p.support_radius_growth = r; }); } ///< \sa `support_radius_growth()`
+  double branch_directionality() const { return parameters_.branch_directionality; } ///< sigma threshold of branch points
+  void set_branch_directionality(double s) { set([&](DF_L1::Parameters& p) { p.branch_directionality = s; }); } ///< \sa `branch_directionality()`
+  int number_of_iterations() const { return parameters_.number_of_iterations; } ///< maximum iterations per stage
+  void set_number_of_iterations(int n) { set([&](DF_L1::Parameters& p) { p.number_of_iterations = n; }); } ///< \sa `number_of_iterations()`
+  int contraction_stages() const { return parameters_.contraction_stages; } ///< maximum support-radius stages
+  void set_contraction_stages(int n) { set([&](DF_L1::Parameters& p) { p.contraction_stages = n; }); } ///< \sa `contraction_stages()`
   /// @}
 
 private:
   static constexpr const char* stage_name = "skeletonization"; // in error messages
 
-  void discard_from_voxelization()
+  // The stage functions in pipeline order, as `DF_L1::Parameter_info::stage` names them.
+  static constexpr int number_of_stages = 9;
+  static int stage_index(const char* stage)
   {
-    raw_grid_.reset();
-    grid_.reset();
-    field_.reset();
-    initial_.reset();
-    contracted_.reset();
-    skeleton_.reset();
+    static const char* const stages[number_of_stages] = {"flag_outliers", "denoise", "upsample", "voxelize",
+                                                         "remove_outlier_voxels", "compute_distance_field",
+                                                         "extract_initial_skeleton", "contract", "convert_to_skeleton"};
+    for(int i = 0; i < number_of_stages; ++i)
+      if(std::string(stage) == stages[i])
+        return i;
+    return 0;
+  }
+
+  // Changes a copy of the parameters and sets it.
+  template <class Change>
+  void set(Change change)
+  {
+    DF_L1::Parameters p = parameters_;
+    change(p);
+    set_parameters(p);
+  }
+
+  // Discards the results of the stage `first` (in the order of stage_index()) and after.
+  void discard_from(int first)
+  {
+    if(first <= 0)
+    {
+      sparse_outliers_.clear();
+      sparse_outlier_count_ = 0;
+    }
+    if(first <= 1)
+    {
+      denoise_checked_ = denoised_ = false;
+      surface_noise_ = residual_growth_ = 0;
+      kept_points_.clear();
+    }
+    if(first <= 2)
+    {
+      upsampled_ = false;
+      added_points_.clear();
+    }
+    if(first <= 3)
+      raw_grid_.reset();
+    if(first <= 4)
+    {
+      grid_.reset();
+      outliers_.clear();
+      outlier_count_ = 0;
+    }
+    if(first <= 5)
+      field_.reset();
+    if(first <= 6)
+      initial_.reset();
+    if(first <= 7)
+      contracted_.reset();
+    if(first <= 8)
+      skeleton_.reset();
   }
 
   // Points on a plane (or a line) enclose no volume, yet the voxels between their samples
@@ -453,10 +484,16 @@ private:
   // h0 as set, or derived from the number of kept and added points (once upsampled)
   double resolved_initial_support_radius() const
   {
-    if(initial_support_radius_set_)
-      return initial_support_radius_;
-    return DF_L1::internal::initial_support_radius(parameters::default_values(), diagonal_,
-                                                   kept_points_.size() + added_points_.size(), stage_name);
+    return parameters_.initial_support_radius
+             ? *parameters_.initial_support_radius
+             : DF_L1::internal::default_initial_support_radius(diagonal_, kept_points_.size() + added_points_.size());
+  }
+
+  // the outlier size as set, or derived from the grid (once voxelized)
+  int resolved_outlier_component_size() const
+  {
+    return parameters_.outlier_component_size ? *parameters_.outlier_component_size
+                                              : DF_L1::internal::default_outlier_component_size(raw_grid_->dims);
   }
 
   // the points the grid and the contraction are built from
@@ -469,27 +506,7 @@ private:
 
   std::vector<Point> points_;
   double diagonal_ = 0;
-  int voxel_resolution_ = 100;
-  double initial_voxel_size_ = 0;
-  int exterior_propagation_steps_ = 1;
-  DF_L1::Denoising denoising_ = DF_L1::Denoising::AUTOMATIC;
-  unsigned int denoising_neighbors_ = 24;
-  bool upsampling_ = true;
-  int upsampling_neighbors_ = 5;
-  double upsampling_radius_ = 0;
-  int outlier_component_size_ = 0;
-  bool outlier_component_size_set_ = false; // otherwise derived from the grid
-  double thinning_coefficient_ = 0.86;
-  double spur_length_ratio_ = 1;
-  DF_L1::Skeletonization_method method_ = DF_L1::Skeletonization_method::DISTANCE_FIELD_GUIDED;
-  std::size_t number_of_samples_ = 1500;
-  double repulsion_coefficient_ = 0.35;
-  double initial_support_radius_ = 0;
-  bool initial_support_radius_set_ = false; // otherwise derived from the kept and added points
-  double support_radius_growth_ = 0.5;
-  double branch_directionality_ = 0.9;
-  int iterations_per_stage_ = 30;
-  int contraction_stages_ = 64;
+  DF_L1::Parameters parameters_;
 
   std::vector<bool> sparse_outliers_, outliers_;
   std::size_t sparse_outlier_count_ = 0, outlier_count_ = 0;

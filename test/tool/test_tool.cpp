@@ -4,6 +4,8 @@
 
 #include "support/synthetic_shapes.h"
 
+#include <CGAL/DF_L1_skeleton/Parameters.h>
+
 #include <boost/property_tree/json_parser.hpp>
 #include <boost/property_tree/ptree.hpp>
 
@@ -609,5 +611,52 @@ TEST_CASE("tool: --help lists the stages and the contraction options", "[tool][f
   {
     INFO(text);
     CHECK(help.find(text) != std::string::npos);
+  }
+}
+
+TEST_CASE("tool: every library parameter has an option, and the earlier spellings still work", "[tool][parameters]")
+{
+  const Scratch scratch;
+  // --help lists each parameter of the library's table under its canonical name
+  const std::string help_file = scratch.path("help.txt");
+  REQUIRE(std::system(("\"" + std::string(DF_L1_TOOL_PATH) + "\" --help > " + quoted(help_file)).c_str()) == 0);
+  const std::string help = read_text(help_file);
+  for(const CGAL::DF_L1::Parameter_info& info : CGAL::DF_L1::parameter_table())
+  {
+    INFO(info.name);
+    CHECK(help.find("--" + info.option() + " ") != std::string::npos);
+    CHECK(help.find("(default: " + std::string(info.default_text) + ")") != std::string::npos);
+  }
+  // old and canonical spellings give the same skeleton and the same report parameters
+  const std::string input = shape_input(scratch, "y_junction", 3000);
+  const struct
+  {
+    std::string old_spelling, canonical;
+  } cases[] = {
+    {"--repulsion 0.3 --samples 400 --iterations 20", "--repulsion-coefficient 0.3 --number-of-samples=400 --number-of-iterations 20"},
+    {"--support-growth 0.6 --branch-sigma 0.85 --support-radius 0.08",
+     "--support-radius-growth 0.6 --branch-directionality 0.85 --initial-support-radius 0.08"},
+    {"--no-upsampling --method l1 --denoise off", "--upsampling off --skeletonization-method l1 --denoising off"},
+  };
+  for(const auto& c : cases)
+  {
+    INFO(c.old_spelling);
+    const std::string a = scratch.path("a.ply"), b = scratch.path("b.ply");
+    const Run ra = run_tool(quoted(input) + " " + quoted(a) + " --threads 1 --report " + quoted(scratch.path("a.json")) + " " + c.old_spelling, scratch);
+    const Run rb = run_tool(quoted(input) + " " + quoted(b) + " --threads 1 --report " + quoted(scratch.path("b.json")) + " " + c.canonical, scratch);
+    INFO(ra.err << rb.err);
+    REQUIRE(ra.status == 0);
+    REQUIRE(rb.status == 0);
+    CHECK(read_text(a) == read_text(b));
+    CHECK(read_report(scratch.path("a.json")).get_child("parameters") == read_report(scratch.path("b.json")).get_child("parameters"));
+  }
+  // a value out of range names the option as typed, and the library's range
+  for(const std::string bad : {"--repulsion-coefficient 0.7", "--number-of-samples 0", "--upsampling maybe", "--denoising loud"})
+  {
+    INFO(bad);
+    const Run r = run_tool(quoted(input) + " " + quoted(scratch.path("bad.obj")) + " " + bad, scratch);
+    CHECK(r.status == 2);
+    CHECK(r.err.find(bad.substr(0, bad.find(' '))) != std::string::npos);
+    CHECK_FALSE(fs::exists(scratch.path("bad.obj")));
   }
 }

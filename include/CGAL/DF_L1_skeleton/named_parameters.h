@@ -5,7 +5,8 @@
 
 /// \file named_parameters.h
 /// The package's own named parameters, next to CGAL's (`point_map`, `geom_traits`,
-/// `random_seed`, `callback`...).
+/// `number_of_samples`, `number_of_iterations`). Their defaults and ranges are those of
+/// `CGAL::DF_L1::parameter_table()`; each tag is `df_l1_` followed by the parameter's name.
 ///
 /// CGAL 5.5 offers no way for a package outside CGAL to add chainable member
 /// functions to `CGAL::Named_function_parameters`, so each of our parameters is a
@@ -17,6 +18,7 @@
 /// auto np2 = params::thinning_coefficient(0.8, params::voxel_resolution(64));
 /// \endcode
 
+#include <CGAL/DF_L1_skeleton/Parameters.h>
 #include <CGAL/DF_L1_skeleton/errors.h>
 
 #include <CGAL/Named_function_parameters.h>
@@ -31,16 +33,16 @@ namespace CGAL {
 namespace internal_np {
 enum df_l1_voxel_resolution_t { df_l1_voxel_resolution };
 enum df_l1_initial_voxel_size_t { df_l1_initial_voxel_size };
-enum df_l1_exterior_propagation_t { df_l1_exterior_propagation };
+enum df_l1_exterior_propagation_steps_t { df_l1_exterior_propagation_steps };
 enum df_l1_upsampling_t { df_l1_upsampling };
 enum df_l1_upsampling_neighbors_t { df_l1_upsampling_neighbors };
 enum df_l1_upsampling_radius_t { df_l1_upsampling_radius };
 enum df_l1_thinning_coefficient_t { df_l1_thinning_coefficient };
 enum df_l1_outlier_component_size_t { df_l1_outlier_component_size };
-enum df_l1_spur_length_t { df_l1_spur_length };
-enum df_l1_method_t { df_l1_method };
-enum df_l1_repulsion_t { df_l1_repulsion };
-enum df_l1_support_radius_t { df_l1_support_radius };
+enum df_l1_spur_length_ratio_t { df_l1_spur_length_ratio };
+enum df_l1_skeletonization_method_t { df_l1_skeletonization_method };
+enum df_l1_repulsion_coefficient_t { df_l1_repulsion_coefficient };
+enum df_l1_initial_support_radius_t { df_l1_initial_support_radius };
 enum df_l1_support_radius_growth_t { df_l1_support_radius_growth };
 enum df_l1_branch_directionality_t { df_l1_branch_directionality };
 enum df_l1_contraction_stages_t { df_l1_contraction_stages };
@@ -78,7 +80,7 @@ CGAL_DF_L1_ADD_NAMED_PARAMETER(df_l1_initial_voxel_size, initial_voxel_size)
 /// \ingroup PkgDFL1SkeletonNamedParameters
 /// How many 26-neighbour steps the exterior label may spread through the empty
 /// sub-voxels of a boundary voxel at each refinement level (default 1, the paper's rule).
-CGAL_DF_L1_ADD_NAMED_PARAMETER(df_l1_exterior_propagation, exterior_propagation_steps)
+CGAL_DF_L1_ADD_NAMED_PARAMETER(df_l1_exterior_propagation_steps, exterior_propagation_steps)
 /// \ingroup PkgDFL1SkeletonNamedParameters
 /// Whether sparse regions are upsampled before voxelization (default `true`).
 CGAL_DF_L1_ADD_NAMED_PARAMETER(df_l1_upsampling, upsampling)
@@ -98,7 +100,7 @@ CGAL_DF_L1_ADD_NAMED_PARAMETER(df_l1_outlier_component_size, outlier_component_s
 /// \ingroup PkgDFL1SkeletonNamedParameters
 /// Terminal branches of the initial skeleton shorter than this many times the local
 /// radius at their junction are pruned (default 1).
-CGAL_DF_L1_ADD_NAMED_PARAMETER(df_l1_spur_length, spur_length_ratio)
+CGAL_DF_L1_ADD_NAMED_PARAMETER(df_l1_spur_length_ratio, spur_length_ratio)
 /// \ingroup PkgDFL1SkeletonNamedParameters
 /// Whether the initial skeleton's curves enter the parts thinner than two voxels, that
 /// have no skeleton voxel (default `true`; `DF_L1_skeletonization` turns it off for
@@ -126,13 +128,13 @@ CGAL_DF_L1_ADD_NAMED_PARAMETER(df_l1_open_crotches, open_crotches)
 /// \ingroup PkgDFL1SkeletonNamedParameters
 /// The refinement method, a `CGAL::DF_L1::Skeletonization_method` (default
 /// `DISTANCE_FIELD_GUIDED`; `L1_MEDIAL` switches the guidance off, as a baseline).
-CGAL_DF_L1_ADD_NAMED_PARAMETER(df_l1_method, skeletonization_method)
+CGAL_DF_L1_ADD_NAMED_PARAMETER(df_l1_skeletonization_method, skeletonization_method)
 /// \ingroup PkgDFL1SkeletonNamedParameters
 /// u, the weight of the repulsion between samples in Eq. 8, in [0, 0.5) (default 0.35).
-CGAL_DF_L1_ADD_NAMED_PARAMETER(df_l1_repulsion, repulsion_coefficient)
+CGAL_DF_L1_ADD_NAMED_PARAMETER(df_l1_repulsion_coefficient, repulsion_coefficient)
 /// \ingroup PkgDFL1SkeletonNamedParameters
 /// h0, the initial support radius of the contraction (default 2 d_bb / cbrt(N), the paper's).
-CGAL_DF_L1_ADD_NAMED_PARAMETER(df_l1_support_radius, initial_support_radius)
+CGAL_DF_L1_ADD_NAMED_PARAMETER(df_l1_initial_support_radius, initial_support_radius)
 /// \ingroup PkgDFL1SkeletonNamedParameters
 /// The growth ratio of the support radius between stages, h <- (1 + ratio) h (default 0.5).
 CGAL_DF_L1_ADD_NAMED_PARAMETER(df_l1_support_radius_growth, support_radius_growth)
@@ -158,237 +160,214 @@ CGAL_DF_L1_ADD_NAMED_PARAMETER(df_l1_denoising_neighbors, denoising_neighbors)
 
 namespace DF_L1 {
 
-/// \ingroup PkgDFL1SkeletonRef
-/// The refinement method (named parameter `skeletonization_method`).
-enum class Skeletonization_method
-{
-  /// the paper's method: samples attracted to the initial skeleton, never moving to a
-  /// voxel of smaller distance value, adaptive support radius, inside-only bridges
-  DISTANCE_FIELD_GUIDED,
-  /// the plain L1-medial skeleton (Huang et al. 2013): the same engine with the guidance
-  /// off and a global support radius growing by stages
-  L1_MEDIAL
-};
-
-/// \ingroup PkgDFL1SkeletonRef
-/// When the points are smoothed before voxelization (named parameter `denoising`).
-enum class Denoising
-{
-  /// when `estimate_surface_noise()` exceeds a fifth of the finest voxel size
-  AUTOMATIC,
-  /// always
-  ALWAYS,
-  /// never
-  NEVER
-};
-
 namespace internal {
 
-// Each parameter has one default and one range, read here by the stage that uses it and
-// by DF_L1_skeletonization; `stage` names the caller in the error message.
+// The stage functions read their parameters here: the default is the one of
+// `Parameters`, the range that of `parameter_table()`; `stage` names the caller in the
+// error message.
 
-// V is read by several stages (upsampling spacing, voxelization).
+template <class Tag, class NamedParameters, class T>
+T parameter_or(const NamedParameters& np, Tag tag, const T& default_value)
+{
+  return parameters::choose_parameter(parameters::get_parameter(np, tag), default_value);
+}
+
+template <class T>
+T checked(const char* name, T value, const char* stage)
+{
+  checked_parameter(name, double(value), stage);
+  return value;
+}
+
 template <class NamedParameters>
 int voxel_resolution(const NamedParameters& np, const char* stage)
 {
-  const int V = parameters::choose_parameter(parameters::get_parameter(np, internal_np::df_l1_voxel_resolution), 100);
-  if(V < 3 || V > 2048)
-    throw Invalid_input(std::string(stage) + ": voxel_resolution must be in [3, 2048], got " + std::to_string(V));
-  return V;
-}
-
-inline double check_initial_voxel_size(double s0, const char* stage)
-{
-  if(!(s0 > 0) || !std::isfinite(s0))
-    throw Invalid_input(std::string(stage) + ": initial_voxel_size must be positive and finite");
-  return s0;
+  return checked("voxel_resolution", parameter_or(np, internal_np::df_l1_voxel_resolution, Parameters().voxel_resolution), stage);
 }
 
 // s0, default d_bb / 9 (the paper).
 template <class NamedParameters>
 double initial_voxel_size(const NamedParameters& np, double diagonal, const char* stage)
 {
-  return check_initial_voxel_size(
-    parameters::choose_parameter(parameters::get_parameter(np, internal_np::df_l1_initial_voxel_size), diagonal / 9), stage);
+  return checked("initial_voxel_size", parameter_or(np, internal_np::df_l1_initial_voxel_size, diagonal / 9), stage);
 }
 
 template <class NamedParameters>
 int exterior_propagation_steps(const NamedParameters& np, const char* stage)
 {
-  const int steps = parameters::choose_parameter(parameters::get_parameter(np, internal_np::df_l1_exterior_propagation), 1);
-  if(steps < 1 || steps > 27)
-    throw Invalid_input(std::string(stage) + ": exterior_propagation_steps must be in [1, 27]");
-  return steps;
+  return checked("exterior_propagation_steps",
+                 parameter_or(np, internal_np::df_l1_exterior_propagation_steps, Parameters().exterior_propagation_steps), stage);
 }
 
 template <class NamedParameters>
 int upsampling_neighbors(const NamedParameters& np, const char* stage)
 {
-  const int k = parameters::choose_parameter(parameters::get_parameter(np, internal_np::df_l1_upsampling_neighbors), 5);
-  if(k < 1 || k > 64)
-    throw Invalid_input(std::string(stage) + ": upsampling_neighbors must be in [1, 64], got " + std::to_string(k));
-  return k;
-}
-
-inline double check_upsampling_radius(double r, const char* stage)
-{
-  if(!(r > 0) || !std::isfinite(r))
-    throw Invalid_input(std::string(stage) + ": upsampling_radius must be positive and finite");
-  return r;
+  return checked("upsampling_neighbors", parameter_or(np, internal_np::df_l1_upsampling_neighbors, Parameters().upsampling_neighbors),
+                 stage);
 }
 
 // r of the density test, default 3 d_bb / cbrt(N) for N points.
 template <class NamedParameters>
 double upsampling_radius(const NamedParameters& np, double diagonal, std::size_t n, const char* stage)
 {
-  return check_upsampling_radius(
-    parameters::choose_parameter(parameters::get_parameter(np, internal_np::df_l1_upsampling_radius),
-                                 3 * diagonal / std::cbrt(double(n))),
-    stage);
-}
-
-inline int check_outlier_component_size(int voxels, const char* stage)
-{
-  if(voxels < 0)
-    throw Invalid_input(std::string(stage) + ": outlier_component_size must not be negative");
-  return voxels;
+  return checked("upsampling_radius",
+                 parameter_or(np, internal_np::df_l1_upsampling_radius, 3 * diagonal / std::cbrt(double(n))), stage);
 }
 
 // Default max(3, V/10), V the longest side of the grid in voxels.
+inline int default_outlier_component_size(const std::array<int, 3>& dims)
+{
+  return (std::max)(3, (std::max)({dims[0], dims[1], dims[2]}) / 10);
+}
+
 template <class NamedParameters>
 int outlier_component_size(const NamedParameters& np, const std::array<int, 3>& dims, const char* stage)
 {
-  const int longest = (std::max)({dims[0], dims[1], dims[2]});
-  return check_outlier_component_size(
-    parameters::choose_parameter(parameters::get_parameter(np, internal_np::df_l1_outlier_component_size),
-                                 (std::max)(3, longest / 10)),
-    stage);
+  return checked("outlier_component_size",
+                 parameter_or(np, internal_np::df_l1_outlier_component_size, default_outlier_component_size(dims)), stage);
 }
 
 template <class NamedParameters>
 double thinning_coefficient(const NamedParameters& np, const char* stage)
 {
-  const double c = parameters::choose_parameter(parameters::get_parameter(np, internal_np::df_l1_thinning_coefficient), 0.86);
-  if(!(c > 0 && c <= 10))
-    throw Invalid_input(std::string(stage) + ": thinning_coefficient must be in (0, 10]");
-  return c;
-}
-
-inline double non_negative(double value, const char* name, const char* stage)
-{
-  if(!(value >= 0) || !std::isfinite(value))
-    throw Invalid_input(std::string(stage) + ": " + name + " must be a non-negative number");
-  return value;
+  return checked("thinning_coefficient", parameter_or(np, internal_np::df_l1_thinning_coefficient, Parameters().thinning_coefficient),
+                 stage);
 }
 
 template <class NamedParameters>
 double spur_length_ratio(const NamedParameters& np, const char* stage)
 {
-  return non_negative(parameters::choose_parameter(parameters::get_parameter(np, internal_np::df_l1_spur_length), 1.0),
-                      "spur_length_ratio", stage);
+  return checked("spur_length_ratio", parameter_or(np, internal_np::df_l1_spur_length_ratio, Parameters().spur_length_ratio), stage);
 }
 
+// Not a user parameter (the class passes its estimate), so not in the table.
 template <class NamedParameters>
 double surface_noise(const NamedParameters& np, const char* stage)
 {
-  return non_negative(parameters::choose_parameter(parameters::get_parameter(np, internal_np::df_l1_surface_noise), 0.0),
-                      "surface_noise", stage);
+  const double noise = parameter_or(np, internal_np::df_l1_surface_noise, 0.0);
+  if(!(noise >= 0) || !std::isfinite(noise))
+    throw Invalid_input(std::string(stage) + ": surface_noise must be a non-negative number");
+  return noise;
 }
 
 template <class NamedParameters>
 Skeletonization_method skeletonization_method(const NamedParameters& np)
 {
-  return parameters::choose_parameter(parameters::get_parameter(np, internal_np::df_l1_method),
-                                      Skeletonization_method::DISTANCE_FIELD_GUIDED);
+  return parameter_or(np, internal_np::df_l1_skeletonization_method, Parameters().skeletonization_method);
 }
 
 template <class NamedParameters>
 Denoising denoising(const NamedParameters& np)
 {
-  return parameters::choose_parameter(parameters::get_parameter(np, internal_np::df_l1_denoising), Denoising::AUTOMATIC);
+  return parameter_or(np, internal_np::df_l1_denoising, Parameters().denoising);
+}
+
+template <class NamedParameters>
+bool upsampling(const NamedParameters& np)
+{
+  return parameter_or(np, internal_np::df_l1_upsampling, Parameters().upsampling);
 }
 
 template <class NamedParameters>
 unsigned int denoising_neighbors(const NamedParameters& np, const char* stage)
 {
-  const int k = parameters::choose_parameter(parameters::get_parameter(np, internal_np::df_l1_denoising_neighbors), 24);
-  if(k < 6 || k > 256)
-    throw Invalid_input(std::string(stage) + ": denoising_neighbors must be in [6, 256], got " + std::to_string(k));
-  return unsigned(k);
+  return unsigned(
+    checked("denoising_neighbors", parameter_or(np, internal_np::df_l1_denoising_neighbors, Parameters().denoising_neighbors), stage));
+}
+
+// M as requested (the stages use at most the points).
+template <class NamedParameters>
+std::size_t requested_samples(const NamedParameters& np, const char* stage)
+{
+  return checked("number_of_samples", parameter_or(np, internal_np::number_of_samples, Parameters().number_of_samples), stage);
 }
 
 // M, default 1500 (the paper's timings) but never more than the points.
 template <class NamedParameters>
 std::size_t number_of_samples(const NamedParameters& np, std::size_t points, const char* stage)
 {
-  const std::size_t m = parameters::choose_parameter(parameters::get_parameter(np, internal_np::number_of_samples),
-                                                     std::size_t(1500));
-  if(m < 1)
-    throw Invalid_input(std::string(stage) + ": number_of_samples must be at least 1");
-  return (std::min)(m, points);
+  return (std::min)(requested_samples(np, stage), points);
 }
 
 template <class NamedParameters>
 double repulsion_coefficient(const NamedParameters& np, const char* stage)
 {
-  const double u = parameters::choose_parameter(parameters::get_parameter(np, internal_np::df_l1_repulsion), 0.35);
-  if(!(u >= 0 && u < 0.5))
-    throw Invalid_input(std::string(stage) + ": repulsion_coefficient must be in [0, 0.5)");
-  return u;
-}
-
-inline double check_initial_support_radius(double h, const char* stage)
-{
-  if(!(h > 0) || !std::isfinite(h))
-    throw Invalid_input(std::string(stage) + ": initial_support_radius must be positive and finite");
-  return h;
+  return checked("repulsion_coefficient",
+                 parameter_or(np, internal_np::df_l1_repulsion_coefficient, Parameters().repulsion_coefficient), stage);
 }
 
 // h0 = 2 d_bb / cbrt(N) (the paper).
+inline double default_initial_support_radius(double diagonal, std::size_t n)
+{
+  return 2 * diagonal / std::cbrt(double((std::max)(n, std::size_t(1))));
+}
+
 template <class NamedParameters>
 double initial_support_radius(const NamedParameters& np, double diagonal, std::size_t n, const char* stage)
 {
-  return check_initial_support_radius(
-    parameters::choose_parameter(parameters::get_parameter(np, internal_np::df_l1_support_radius),
-                                 2 * diagonal / std::cbrt(double((std::max)(n, std::size_t(1))))),
-    stage);
+  return checked("initial_support_radius",
+                 parameter_or(np, internal_np::df_l1_initial_support_radius, default_initial_support_radius(diagonal, n)), stage);
 }
 
 template <class NamedParameters>
 double support_radius_growth(const NamedParameters& np, const char* stage)
 {
-  const double r = parameters::choose_parameter(parameters::get_parameter(np, internal_np::df_l1_support_radius_growth), 0.5);
-  if(!(r > 0 && r <= 4))
-    throw Invalid_input(std::string(stage) + ": support_radius_growth must be in (0, 4]");
-  return r;
+  return checked("support_radius_growth",
+                 parameter_or(np, internal_np::df_l1_support_radius_growth, Parameters().support_radius_growth), stage);
 }
 
 template <class NamedParameters>
 double branch_directionality(const NamedParameters& np, const char* stage)
 {
-  const double s = parameters::choose_parameter(parameters::get_parameter(np, internal_np::df_l1_branch_directionality), 0.9);
-  if(!(s > 1.0 / 3 && s < 1))
-    throw Invalid_input(std::string(stage) + ": branch_directionality must be in (1/3, 1)");
-  return s;
+  return checked("branch_directionality",
+                 parameter_or(np, internal_np::df_l1_branch_directionality, Parameters().branch_directionality), stage);
 }
 
 template <class NamedParameters>
 int contraction_stages(const NamedParameters& np, const char* stage)
 {
-  const int n = parameters::choose_parameter(parameters::get_parameter(np, internal_np::df_l1_contraction_stages), 64);
-  if(n < 1 || n > 64)
-    throw Invalid_input(std::string(stage) + ": contraction_stages must be in [1, 64]");
-  return n;
+  return checked("contraction_stages", parameter_or(np, internal_np::df_l1_contraction_stages, Parameters().contraction_stages),
+                 stage);
 }
 
 // Maximum number of iterations of one support-radius stage (CGAL's number_of_iterations).
 template <class NamedParameters>
 int iterations_per_stage(const NamedParameters& np, const char* stage)
 {
-  const int n = parameters::choose_parameter(parameters::get_parameter(np, internal_np::number_of_iterations), 30);
-  if(n < 1 || n > 10000)
-    throw Invalid_input(std::string(stage) + ": number_of_iterations must be in [1, 10000]");
-  return n;
+  return checked("number_of_iterations", parameter_or(np, internal_np::number_of_iterations, Parameters().number_of_iterations),
+                 stage);
+}
+
+// The user parameters of `np`, every one checked; the length parameters not given stay
+// empty (derived from the input when the stages run).
+template <class NamedParameters>
+Parameters resolve_parameters(const NamedParameters& np, const char* stage)
+{
+  Parameters p;
+  p.denoising = denoising(np);
+  p.denoising_neighbors = int(denoising_neighbors(np, stage));
+  p.upsampling = upsampling(np);
+  p.upsampling_neighbors = upsampling_neighbors(np, stage);
+  if(!parameters::is_default_parameter<NamedParameters, internal_np::df_l1_upsampling_radius_t>::value)
+    p.upsampling_radius = upsampling_radius(np, 1, 1, stage);
+  p.voxel_resolution = voxel_resolution(np, stage);
+  if(!parameters::is_default_parameter<NamedParameters, internal_np::df_l1_initial_voxel_size_t>::value)
+    p.initial_voxel_size = initial_voxel_size(np, 1, stage);
+  p.exterior_propagation_steps = exterior_propagation_steps(np, stage);
+  if(!parameters::is_default_parameter<NamedParameters, internal_np::df_l1_outlier_component_size_t>::value)
+    p.outlier_component_size = outlier_component_size(np, {0, 0, 0}, stage);
+  p.thinning_coefficient = thinning_coefficient(np, stage);
+  p.spur_length_ratio = spur_length_ratio(np, stage);
+  p.skeletonization_method = skeletonization_method(np);
+  p.number_of_samples = requested_samples(np, stage);
+  p.repulsion_coefficient = repulsion_coefficient(np, stage);
+  if(!parameters::is_default_parameter<NamedParameters, internal_np::df_l1_initial_support_radius_t>::value)
+    p.initial_support_radius = initial_support_radius(np, 1, 1, stage);
+  p.support_radius_growth = support_radius_growth(np, stage);
+  p.branch_directionality = branch_directionality(np, stage);
+  p.number_of_iterations = iterations_per_stage(np, stage);
+  p.contraction_stages = contraction_stages(np, stage);
+  return p;
 }
 
 } // namespace internal
