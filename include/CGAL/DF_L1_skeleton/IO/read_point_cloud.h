@@ -26,9 +26,14 @@
 ///   mark are accepted in text data.
 
 #include <CGAL/DF_L1_skeleton/errors.h>
-#include <CGAL/DF_L1_skeleton/IO/internal/read_point_cloud_impl.h>
+#include <CGAL/DF_L1_skeleton/IO/internal/read_off.h>
+#include <CGAL/DF_L1_skeleton/IO/internal/read_ply.h>
+#include <CGAL/DF_L1_skeleton/IO/internal/read_xyz.h>
+#include <CGAL/DF_L1_skeleton/IO/internal/reader_messages.h>
+#include <CGAL/DF_L1_skeleton/IO/internal/text_input.h>
 
 #include <cerrno>
+#include <cstdint>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
