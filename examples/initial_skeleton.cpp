@@ -3,7 +3,7 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/DF_L1_skeleton/IO/read_point_cloud.h>
 #include <CGAL/DF_L1_skeleton/IO/write_skeleton.h>
-#include <CGAL/DF_L1_skeleton/distance_field.h>
+#include <CGAL/DF_L1_skeleton/compute_distance_field.h>
 #include <CGAL/DF_L1_skeleton/extract_initial_skeleton.h>
 #include <CGAL/DF_L1_skeleton/remove_outlier_voxels.h>
 #include <CGAL/DF_L1_skeleton/upsample_sparse_regions.h>

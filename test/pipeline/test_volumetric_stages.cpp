@@ -3,7 +3,7 @@
 #include "support/synthetic_shapes.h"
 #include "support/voxel_checks.h"
 
-#include <CGAL/DF_L1_skeleton/distance_field.h>
+#include <CGAL/DF_L1_skeleton/compute_distance_field.h>
 #include <CGAL/DF_L1_skeleton/extract_initial_skeleton.h>
 #include <CGAL/DF_L1_skeleton/flag_sparse_outliers.h>
 #include <CGAL/DF_L1_skeleton/remove_outlier_voxels.h>

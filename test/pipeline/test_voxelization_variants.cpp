@@ -3,7 +3,7 @@
 #include "support/synthetic_shapes.h"
 #include "support/voxel_checks.h"
 
-#include <CGAL/DF_L1_skeleton/distance_field.h>
+#include <CGAL/DF_L1_skeleton/compute_distance_field.h>
 #include <CGAL/DF_L1_skeleton/upsample_sparse_regions.h>
 #include <CGAL/DF_L1_skeleton/voxelize_point_set.h>
 

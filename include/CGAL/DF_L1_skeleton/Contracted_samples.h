@@ -7,7 +7,7 @@
 /// The result of `contract_samples()`: the samples of the L1-median contraction, the
 /// branches traced through them and the history of the iterations.
 
-#include <CGAL/DF_L1_skeleton/named_parameters.h>
+#include <CGAL/DF_L1_skeleton/Parameters.h>
 
 #include <cstddef>
 #include <cstdint>

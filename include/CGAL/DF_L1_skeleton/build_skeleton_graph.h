@@ -8,12 +8,14 @@
 /// samples (guided method) or from the traced branches (plain L1-medial method).
 
 #include <CGAL/DF_L1_skeleton/Contracted_samples.h>
+#include <CGAL/DF_L1_skeleton/Distance_field.h>
+#include <CGAL/DF_L1_skeleton/Initial_skeleton.h>
 #include <CGAL/DF_L1_skeleton/Skeleton_graph.h>
-#include <CGAL/DF_L1_skeleton/distance_field.h>
-#include <CGAL/DF_L1_skeleton/extract_initial_skeleton.h>
 #include <CGAL/DF_L1_skeleton/internal/curve_graph_editing.h>
 #include <CGAL/DF_L1_skeleton/internal/l1_median_iteration.h>
 #include <CGAL/DF_L1_skeleton/internal/uniform_grid.h>
+
+#include <CGAL/Iterator_range.h>
 
 #include <algorithm>
 #include <array>

@@ -7,9 +7,9 @@
 /// Stage 5 (paper, section 6): the distance-field guided L1-median contraction.
 
 #include <CGAL/DF_L1_skeleton/Contracted_samples.h>
-#include <CGAL/DF_L1_skeleton/distance_field.h>
+#include <CGAL/DF_L1_skeleton/Distance_field.h>
 #include <CGAL/DF_L1_skeleton/errors.h>
-#include <CGAL/DF_L1_skeleton/extract_initial_skeleton.h>
+#include <CGAL/DF_L1_skeleton/Initial_skeleton.h>
 #include <CGAL/DF_L1_skeleton/internal/branch_tracing.h>
 #include <CGAL/DF_L1_skeleton/internal/l1_median_iteration.h>
 #include <CGAL/DF_L1_skeleton/internal/parallel_for.h>

@@ -4,7 +4,7 @@
 #define CGAL_DF_L1_SKELETON_INTERNAL_DEEPEST_PATH_H
 
 #include <CGAL/DF_L1_skeleton/Skeleton_graph.h>
-#include <CGAL/DF_L1_skeleton/distance_field.h>
+#include <CGAL/DF_L1_skeleton/Distance_field.h>
 #include <CGAL/DF_L1_skeleton/internal/voxel_components.h>
 
 #include <algorithm>

@@ -3,12 +3,13 @@
 #ifndef CGAL_DF_L1_SKELETON_INTERNAL_L1_MEDIAN_ITERATION_H
 #define CGAL_DF_L1_SKELETON_INTERNAL_L1_MEDIAN_ITERATION_H
 
+#include <CGAL/DF_L1_skeleton/Distance_field.h>
 #include <CGAL/DF_L1_skeleton/Voxel_grid.h>
-#include <CGAL/DF_L1_skeleton/distance_field.h>
 #include <CGAL/DF_L1_skeleton/internal/grid_walk.h>
 #include <CGAL/DF_L1_skeleton/internal/parallel_for.h>
 #include <CGAL/DF_L1_skeleton/internal/sample_selection.h>
 #include <CGAL/DF_L1_skeleton/internal/uniform_grid.h>
+#include <CGAL/DF_L1_skeleton/internal/vec3.h>
 
 #include <algorithm>
 #include <array>
@@ -21,23 +22,6 @@
 namespace CGAL {
 namespace DF_L1 {
 namespace internal {
-
-inline Vec3 operator+(const Vec3& a, const Vec3& b) { return {{a[0] + b[0], a[1] + b[1], a[2] + b[2]}}; }
-inline Vec3 operator-(const Vec3& a, const Vec3& b) { return {{a[0] - b[0], a[1] - b[1], a[2] - b[2]}}; }
-inline Vec3 operator*(double s, const Vec3& a) { return {{s * a[0], s * a[1], s * a[2]}}; }
-inline double dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-inline double norm(const Vec3& a) { return std::sqrt(dot(a, a)); }
-inline double distance(const Vec3& a, const Vec3& b) { return norm(a - b); }
-inline Vec3 normalized(const Vec3& a)
-{
-  const double n = norm(a);
-  return n > 0 ? (1 / n) * a : Vec3{{0, 0, 0}};
-}
-template <class Point_3>
-Vec3 to_vec3(const Point_3& p)
-{
-  return {{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())}};
-}
 
 // The voxels as the contraction sees them: the distance value and whether a point is in
 // the shape, looked up in double precision.

@@ -4,7 +4,7 @@
 #define CGAL_DF_L1_SKELETON_INTERNAL_MISSING_BRANCHES_H
 
 #include <CGAL/DF_L1_skeleton/Skeleton_graph.h>
-#include <CGAL/DF_L1_skeleton/distance_field.h>
+#include <CGAL/DF_L1_skeleton/Distance_field.h>
 #include <CGAL/DF_L1_skeleton/internal/deepest_path.h>
 #include <CGAL/DF_L1_skeleton/internal/voxel_components.h>
 

@@ -3,6 +3,8 @@
 #ifndef CGAL_DF_L1_SKELETON_INTERNAL_SAMPLE_SELECTION_H
 #define CGAL_DF_L1_SKELETON_INTERNAL_SAMPLE_SELECTION_H
 
+#include <CGAL/DF_L1_skeleton/internal/vec3.h>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -15,8 +17,6 @@
 namespace CGAL {
 namespace DF_L1 {
 namespace internal {
-
-typedef std::array<double, 3> Vec3;
 
 // Key of the cubic cell of size `cell` that holds p (coordinates relative to `lo`).
 inline std::uint64_t cell_key(const Vec3& p, const Vec3& lo, double cell)

@@ -1,0 +1,68 @@
+// Copyright (c) 2026 DF_L1_skeleton contributors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+#ifndef CGAL_DF_L1_SKELETON_INTERNAL_SAMPLING_SPACING_H
+#define CGAL_DF_L1_SKELETON_INTERNAL_SAMPLING_SPACING_H
+
+/// \file sampling_spacing.h
+/// The sampling spacing of a point cloud: the median distance from a point to its k-th
+/// nearest neighbour. Not part of the public API.
+
+#include <CGAL/DF_L1_skeleton/internal/uniform_grid.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace CGAL {
+namespace DF_L1 {
+namespace internal {
+
+// Median distance from a point to its k-th nearest neighbour, over up to 4000 points
+// taken at a regular stride (deterministic): the sampling spacing of the cloud, in
+// input units. `guess` is the first search radius; `grid` holds `xyz`.
+inline double median_kth_neighbour_distance(const std::vector<std::array<double, 3>>& xyz, int k, double guess,
+                                            const Uniform_grid& grid)
+{
+  const std::size_t n = xyz.size();
+  if(n <= std::size_t(k) || !(guess > 0))
+    return 0;
+  const std::size_t samples = (std::min)(n, std::size_t(4000));
+  std::vector<double> kth, d2;
+  kth.reserve(samples);
+  for(std::size_t s = 0; s < samples; ++s)
+  {
+    const std::size_t i = s * n / samples;
+    for(double r = guess;; r *= 2)
+    {
+      d2.clear();
+      grid.for_each_in_ball(xyz[i], r, [&](std::size_t j, double d) {
+        if(j != i)
+          d2.push_back(d);
+        return true;
+      });
+      if(d2.size() >= std::size_t(k))
+        break;
+    }
+    std::nth_element(d2.begin(), d2.begin() + (k - 1), d2.end());
+    kth.push_back(std::sqrt(d2[k - 1]));
+  }
+  std::nth_element(kth.begin(), kth.begin() + kth.size() / 2, kth.end());
+  return kth[kth.size() / 2];
+}
+
+// The same, on a grid of cell size `guess` built here.
+inline double median_kth_neighbour_distance(const std::vector<std::array<double, 3>>& xyz, int k, double guess)
+{
+  if(xyz.size() <= std::size_t(k) || !(guess > 0))
+    return 0;
+  return median_kth_neighbour_distance(xyz, k, guess, Uniform_grid(xyz, guess));
+}
+
+} // namespace internal
+} // namespace DF_L1
+} // namespace CGAL
+
+#endif // CGAL_DF_L1_SKELETON_INTERNAL_SAMPLING_SPACING_H

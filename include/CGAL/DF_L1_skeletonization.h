@@ -1,0 +1,535 @@
+// Copyright (c) 2026 DF_L1_skeleton contributors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+#ifndef CGAL_DF_L1_SKELETONIZATION_H
+#define CGAL_DF_L1_SKELETONIZATION_H
+
+/// \file DF_L1_skeletonization.h
+/// The `DF_L1_skeletonization` class, which runs the stages of the method one by one and
+/// keeps every intermediate result.
+
+#include <CGAL/DF_L1_skeleton/Contracted_samples.h>
+#include <CGAL/DF_L1_skeleton/Distance_field.h>
+#include <CGAL/DF_L1_skeleton/Initial_skeleton.h>
+#include <CGAL/DF_L1_skeleton/Parameters.h>
+#include <CGAL/DF_L1_skeleton/Skeleton_graph.h>
+#include <CGAL/DF_L1_skeleton/Voxel_grid.h>
+#include <CGAL/DF_L1_skeleton/assign_points_to_skeleton.h>
+#include <CGAL/DF_L1_skeleton/build_skeleton_graph.h>
+#include <CGAL/DF_L1_skeleton/compute_distance_field.h>
+#include <CGAL/DF_L1_skeleton/contract_samples.h>
+#include <CGAL/DF_L1_skeleton/denoise_point_set.h>
+#include <CGAL/DF_L1_skeleton/errors.h>
+#include <CGAL/DF_L1_skeleton/extract_initial_skeleton.h>
+#include <CGAL/DF_L1_skeleton/flag_sparse_outliers.h>
+#include <CGAL/DF_L1_skeleton/internal/point_gap_cuts.h>
+#include <CGAL/DF_L1_skeleton/internal/point_range.h>
+#include <CGAL/DF_L1_skeleton/internal/sampling_spacing.h>
+#include <CGAL/DF_L1_skeleton/internal/spur_pruning.h>
+#include <CGAL/DF_L1_skeleton/internal/uniform_grid.h>
+#include <CGAL/DF_L1_skeleton/named_parameters.h>
+#include <CGAL/DF_L1_skeleton/remove_outlier_voxels.h>
+#include <CGAL/DF_L1_skeleton/skeleton_statistics.h>
+#include <CGAL/DF_L1_skeleton/upsample_sparse_regions.h>
+#include <CGAL/DF_L1_skeleton/voxelize_point_set.h>
+
+#include <CGAL/Named_function_parameters.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/tags.h>
+
+#include <Eigen/Dense>
+
+#include <algorithm>
+#include <cmath>
+#include <iterator>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+
+/// \ingroup PkgDFL1SkeletonRef
+/// Computes the curve skeleton of a point cloud with the distance-field guided
+/// L1-median method, one stage at a time, like `CGAL::Mean_curvature_flow_skeletonization`.
+///
+/// The data flows one way: points, outlier flags and upsampling, voxel grid, distance
+/// field, initial skeleton. Each stage function runs the stages before it if they have
+/// not run yet, so a researcher can stop after any of them and look at its result, and
+/// a user can call the last one alone. Every length parameter left unset derives from
+/// the input (the diagonal d_bb of its bounding box, or the voxel size), so a scaled
+/// cloud gives a scaled result; the getters return the values actually used.
+///
+/// \tparam Traits a model of `Kernel`
+/// \tparam ConcurrencyTag `CGAL::Sequential_tag`, `CGAL::Parallel_tag` or
+///         `CGAL::Parallel_if_available_tag`; results do not depend on the number of threads
+template <class Traits, class ConcurrencyTag = CGAL::Parallel_if_available_tag>
+class DF_L1_skeletonization
+{
+public:
+  /// \name Types
+  /// @{
+  typedef typename Traits::Point_3 Point;                   ///< point type
+  typedef DF_L1::Skeleton_graph<Traits> Skeleton;           ///< the skeleton, a `boost::adjacency_list`
+  typedef DF_L1::Voxel_grid<Traits> Voxel_grid;             ///< labelled voxels
+  typedef DF_L1::Distance_field<Traits> Distance_field;     ///< distance of every voxel
+  typedef DF_L1::Initial_skeleton<Traits> Initial_skeleton; ///< skeleton voxels and their graph
+  typedef DF_L1::Contracted_samples<Traits> Contracted_samples; ///< samples, branches and iterations of the contraction
+  /// @}
+
+  /// Copies the points and reads the parameters.
+  ///
+  /// \tparam PointRange a model of `ConstRange`; its value type is the key type of the point map
+  /// \param points the input points; normals are not needed
+  /// \param np an optional sequence of named parameters among `point_map` and the
+  ///        parameters of the stages: `denoising`, `denoising_neighbors`,
+  ///        `voxel_resolution`, `initial_voxel_size`,
+  ///        `exterior_propagation_steps`, `upsampling`, `upsampling_neighbors`,
+  ///        `upsampling_radius`, `outlier_component_size`, `thinning_coefficient`,
+  ///        `spur_length_ratio`, `skeletonization_method`, `number_of_samples`,
+  ///        `repulsion_coefficient`, `initial_support_radius`, `support_radius_growth`,
+  ///        `branch_directionality`, `number_of_iterations`, `contraction_stages` (see `voxelize_point_set()`,
+  ///        `denoise_point_set()`, `upsample_sparse_regions()`, `remove_outlier_voxels()`,
+  ///        `extract_initial_skeleton()` and `contract_samples()` for their meaning and
+  ///        defaults); the initial skeleton's `thin_parts`, `occupied_depth` and
+  ///        `surface_noise` are set by the class: `thin_parts` on exactly when the cloud
+  ///        was not smoothed (`denoised()`), `occupied_depth` on exactly when it was,
+  ///        `surface_noise` to `surface_noise()`
+  /// \throws DF_L1::Invalid_input if the range is empty, holds a non-finite coordinate,
+  ///         all its points coincide or lie on a plane (within a quarter of a voxel, RMS),
+  ///         or a parameter is out of range
+  template <class PointRange, class NamedParameters = parameters::Default_named_parameters>
+  explicit DF_L1_skeletonization(const PointRange& points, const NamedParameters& np = parameters::default_values())
+  {
+    typedef Point_set_processing_3_np_helper<const PointRange, NamedParameters> NP_helper;
+    const auto point_map = NP_helper::get_const_point_map(points, np);
+    for(const auto& p : points)
+      points_.push_back(get(point_map, p));
+    const CGAL::Bbox_3 box = DF_L1::internal::checked_bbox(points_, CGAL::Identity_property_map<Point>(), stage_name);
+    if(!(DF_L1::internal::longest_side(box) > 0))
+      throw DF_L1::Invalid_input(std::string(stage_name) + ": all " + std::to_string(points_.size()) +
+                                 " points coincide; there is no shape to skeletonize");
+    diagonal_ = DF_L1::internal::diagonal(box);
+    parameters_ = DF_L1::internal::resolve_parameters(np, stage_name);
+    check_volume(DF_L1::internal::longest_side(box) / parameters_.voxel_resolution);
+  }
+
+  /// \name Stages
+  /// Each runs the stages before it when they have not run yet, and does nothing when
+  /// it has already run.
+  /// @{
+
+  /// Flags the scattered outliers (`flag_sparse_outliers()`).
+  void flag_outliers()
+  {
+    if(!sparse_outliers_.empty())
+      return;
+    sparse_outliers_ = DF_L1::flag_sparse_outliers<ConcurrencyTag>(points_);
+    sparse_outlier_count_ = 0;
+    for(bool b : sparse_outliers_)
+      sparse_outlier_count_ += b;
+  }
+
+  /// Estimates the surface noise of the kept points (`estimate_surface_noise()`) and,
+  /// as the `denoising` parameter says, smooths them (`denoise_point_set()`): by default
+  /// when the noise exceeds a fifth of the finest voxel size (measured: at most 0.09
+  /// voxel on clean, sparse, holed or uneven samples, at least 0.40 with 1 % noise) and
+  /// the residual of the local fits grows less than 3 times from 10 to 40 neighbours
+  /// (`residual_growth()`): noise is the same at both scales (a growth of 2 to 2.7 on the
+  /// noisy scans and samples we measured), while the twigs of a LiDAR crown or a sparse
+  /// sample of thin limbs look noisy only to neighbourhoods wider than they are (3.3 to
+  /// 6), and smoothing would erase them. The later stages use the smoothed positions;
+  /// the input points, their indices and the outlier flags stay.
+  void denoise()
+  {
+    if(denoise_checked_)
+      return;
+    flag_outliers();
+    kept_points_.clear();
+    for(std::size_t i = 0; i < points_.size(); ++i)
+      if(!sparse_outliers_[i])
+        kept_points_.push_back(points_[i]);
+    // one fitter, and so one grid, for the noise estimate and the smoothing (the points
+    // were checked by flag_outliers())
+    const DF_L1::internal::Local_quadric_fitter<Traits> fitter(kept_points_);
+    surface_noise_ = DF_L1::internal::surface_noise<ConcurrencyTag>(fitter);
+    const double finest_voxel = DF_L1::internal::longest_side(
+      CGAL::bbox_3(points_.begin(), points_.end())) / parameters_.voxel_resolution;
+    const bool noisy = parameters_.denoising == DF_L1::Denoising::AUTOMATIC && surface_noise_ > 0.2 * finest_voxel;
+    residual_growth_ = noisy ? DF_L1::internal::residual_growth<ConcurrencyTag>(fitter) : 0.0;
+    denoised_ = parameters_.denoising == DF_L1::Denoising::ALWAYS || (noisy && residual_growth_ < 3);
+    if(denoised_)
+      kept_points_ = DF_L1::internal::smoothed_points<ConcurrencyTag>(fitter, kept_points_, unsigned(parameters_.denoising_neighbors));
+    denoise_checked_ = true;
+  }
+
+  /// Adds points in the sparse regions of the kept points (`upsample_sparse_regions()`),
+  /// unless upsampling is off.
+  void upsample()
+  {
+    if(upsampled_)
+      return;
+    denoise();
+    if(parameters_.upsampling)
+    {
+      DF_L1::upsample_sparse_regions<ConcurrencyTag>(
+        kept_points_, std::back_inserter(added_points_),
+        parameters::upsampling_neighbors(parameters_.upsampling_neighbors,
+        parameters::upsampling_radius(upsampling_radius(),
+        parameters::voxel_resolution(parameters_.voxel_resolution))));
+    }
+    upsampled_ = true;
+  }
+
+  /// Voxelizes the kept and added points (`voxelize_point_set()`), without opening the
+  /// crotches (`open_crotches`) in the clouds it smoothed.
+  void voxelize()
+  {
+    if(raw_grid_)
+      return;
+    upsample();
+    raw_grid_ = std::make_unique<Voxel_grid>(DF_L1::voxelize_point_set<ConcurrencyTag>(
+      kept_and_added_points(), parameters::voxel_resolution(parameters_.voxel_resolution,
+           parameters::initial_voxel_size(initial_voxel_size(),
+           parameters::exterior_propagation_steps(parameters_.exterior_propagation_steps,
+           parameters::open_crotches(!denoised_))))));
+  }
+
+  /// Removes the outlier voxels (`remove_outlier_voxels()`) and flags their points.
+  void remove_outlier_voxels()
+  {
+    if(grid_)
+      return;
+    voxelize();
+    grid_ = std::make_unique<Voxel_grid>(DF_L1::remove_outlier_voxels(
+      *raw_grid_, parameters::outlier_component_size(resolved_outlier_component_size()), &outlier_voxel_statistics_));
+    outliers_ = DF_L1::flag_outlier_points(points_, *grid_);
+    outlier_count_ = 0;
+    for(std::size_t i = 0; i < points_.size(); ++i)
+    {
+      outliers_[i] = outliers_[i] || sparse_outliers_[i];
+      outlier_count_ += outliers_[i];
+    }
+  }
+
+  /// Computes the distance field of the voxels (`compute_distance_field()`).
+  void compute_distance_field()
+  {
+    if(field_)
+      return;
+    remove_outlier_voxels();
+    field_ = std::make_unique<Distance_field>(DF_L1::compute_distance_field<ConcurrencyTag>(*grid_));
+  }
+
+  /// Extracts the initial skeleton (`extract_initial_skeleton()`), cuts its cycles where
+  /// they cross a gap between two parts that the points show and the voxels did not
+  /// (parts 1 or 2 voxels apart), and assigns every non-outlier input point to its
+  /// nearest vertex of the graph.
+  void extract_initial_skeleton()
+  {
+    if(initial_)
+      return;
+    compute_distance_field();
+    initial_ = std::make_unique<Initial_skeleton>(DF_L1::extract_initial_skeleton(
+      *field_, parameters::thinning_coefficient(parameters_.thinning_coefficient,
+               parameters::spur_length_ratio(parameters_.spur_length_ratio, parameters::thin_parts(!denoised_, parameters::occupied_depth(denoised_,
+               parameters::surface_noise(surface_noise_)))))));
+    // The cycles through gaps between parts that the voxels could not separate are cut
+    // where the points show the gap (`internal::cut_point_gaps()`); the stubs that are
+    // left go through the spur pruning again.
+    if(DF_L1::skeleton_statistics(initial_->graph).cycles > 0)
+    {
+      const std::vector<std::array<double, 3>> xyz =
+        DF_L1::internal::to_xyz(kept_points_, CGAL::Identity_property_map<Point>());
+      const double voxel = CGAL::to_double(field_->voxel_size);
+      const DF_L1::internal::Uniform_grid grid(xyz, 2 * voxel);
+      const double spacing = DF_L1::internal::median_kth_neighbour_distance(xyz, 6, voxel / 2, grid);
+      if(DF_L1::internal::cut_point_gaps(initial_->graph, xyz, grid, voxel, spacing) > 0)
+        DF_L1::internal::prune_spurs(initial_->graph, parameters_.spur_length_ratio, voxel, surface_noise_);
+    }
+    DF_L1::assign_points_to_skeleton<ConcurrencyTag>(points_, outliers_, initial_->graph);
+  }
+
+  /// Contracts samples of the kept and added points onto the skeleton
+  /// (`contract_samples()`), tracing branches and bridges between stages.
+  void contract()
+  {
+    if(contracted_)
+      return;
+    extract_initial_skeleton();
+    const std::vector<Point> all = kept_and_added_points();
+    contracted_ = std::make_unique<Contracted_samples>(DF_L1::contract_samples<ConcurrencyTag>(
+      all, *field_, *initial_,
+      parameters::skeletonization_method(parameters_.skeletonization_method,
+      parameters::repulsion_coefficient(parameters_.repulsion_coefficient,
+      parameters::initial_support_radius(resolved_initial_support_radius(),
+      parameters::support_radius_growth(parameters_.support_radius_growth,
+      parameters::branch_directionality(parameters_.branch_directionality,
+      parameters::contraction_stages(parameters_.contraction_stages,
+      parameters::number_of_iterations(parameters_.number_of_iterations).number_of_samples(parameters_.number_of_samples)))))))));
+  }
+
+  /// Builds the final skeleton from the contracted samples (`build_skeleton_graph()`)
+  /// and assigns every non-outlier input point to its nearest vertex.
+  void convert_to_skeleton()
+  {
+    if(skeleton_)
+      return;
+    contract();
+    skeleton_ = std::make_unique<Skeleton>(DF_L1::build_skeleton_graph(*contracted_, *field_, *initial_));
+    DF_L1::assign_points_to_skeleton<ConcurrencyTag>(points_, outliers_, *skeleton_);
+  }
+
+  /// Runs every stage that has not run and copies the final skeleton into `skeleton`.
+  void operator()(Skeleton& skeleton)
+  {
+    convert_to_skeleton();
+    skeleton = *skeleton_;
+  }
+  /// @}
+
+  /// \name Results
+  /// Each runs the stages it needs.
+  /// @{
+  const std::vector<Point>& input_points() const { return points_; } ///< the input points, in input order
+  /// one flag per input point: scattered outliers and points of outlier voxels
+  const std::vector<bool>& outlier_flags() { remove_outlier_voxels(); return outliers_; }
+  /// number of input points flagged as outliers
+  std::size_t number_of_outliers() { remove_outlier_voxels(); return outlier_count_; }
+  /// number of input points flagged by `flag_sparse_outliers()` alone
+  std::size_t number_of_sparse_outliers() { flag_outliers(); return sparse_outlier_count_; }
+  /// the estimated noise of the surface, input units (`estimate_surface_noise()`)
+  double surface_noise() { denoise(); return surface_noise_; }
+  /// how the noise estimate grows from 10 to 40 neighbours per fit; the points are
+  /// smoothed automatically only below 3 (see `denoise()`). Measured only when the
+  /// smoothing is automatic and the noise estimate exceeds its threshold; 0 otherwise.
+  double residual_growth() { denoise(); return residual_growth_; }
+  /// whether the points were smoothed before voxelization
+  bool denoised() { denoise(); return denoised_; }
+  /// the points that are not scattered outliers, in input order, at the positions the
+  /// later stages use (smoothed when `denoised()`)
+  const std::vector<Point>& kept_points() { denoise(); return kept_points_; }
+  /// the points added in sparse regions
+  const std::vector<Point>& added_points() { upsample(); return added_points_; }
+  /// the voxels after outlier removal
+  const Voxel_grid& voxel_grid() { remove_outlier_voxels(); return *grid_; }
+  /// what the outlier voxel removal found
+  const DF_L1::Outlier_voxel_statistics& outlier_voxel_statistics() { remove_outlier_voxels(); return outlier_voxel_statistics_; }
+  /// the distance field
+  const Distance_field& distance_field() { compute_distance_field(); return *field_; }
+  /// the initial skeleton: the skeleton voxels S and a curve graph through them
+  const Initial_skeleton& initial_skeleton() { extract_initial_skeleton(); return *initial_; }
+  /// the contracted samples, their branches, and the samples after every iteration
+  const Contracted_samples& contracted_samples() { contract(); return *contracted_; }
+  /// the final skeleton
+  const Skeleton& skeleton() { convert_to_skeleton(); return *skeleton_; }
+  /// @}
+
+  /// \name Parameters
+  /// The getters return the values the stages use: the derived defaults are resolved
+  /// (which runs the stages they derive from). Each setter checks its value (throwing
+  /// `DF_L1::Invalid_input` out of range, as the constructor does) and discards the
+  /// results of the stages that depend on it; the next stage function recomputes them.
+  /// @{
+  double bbox_diagonal() const { return diagonal_; } ///< d_bb
+  /// the parameters as given (derived lengths left empty when they were not set)
+  const DF_L1::Parameters& parameters() const { return parameters_; }
+  /// sets every parameter at once, discarding the results from the first stage whose
+  /// parameters changed
+  void set_parameters(const DF_L1::Parameters& p)
+  {
+    DF_L1::check_parameters(p, stage_name);
+    if(p.voxel_resolution != parameters_.voxel_resolution)
+      check_volume(DF_L1::internal::longest_side(CGAL::bbox_3(points_.begin(), points_.end())) / p.voxel_resolution);
+    int first = number_of_stages;
+    for(const DF_L1::Parameter_info& info : DF_L1::parameter_table())
+    {
+      const bool given_before = info.given == nullptr || info.given(parameters_);
+      const bool given_after = info.given == nullptr || info.given(p);
+      if(given_before != given_after || (given_after && info.read(parameters_) != info.read(p)))
+        first = (std::min)(first, stage_index(info.stage));
+    }
+    parameters_ = p;
+    discard_from(first);
+  }
+
+  DF_L1::Denoising denoising() const { return parameters_.denoising; } ///< when the points are smoothed
+  void set_denoising(DF_L1::Denoising d) { set([&](DF_L1::Parameters& p) { p.denoising = d; }); } ///< \sa `denoising()`
+  unsigned int denoising_neighbors() const { return unsigned(parameters_.denoising_neighbors); } ///< k of the local quadrics
+  void set_denoising_neighbors(int k) { set([&](DF_L1::Parameters& p) { p.denoising_neighbors = k; }); } ///< \sa `denoising_neighbors()`
+  bool upsampling() const { return parameters_.upsampling; } ///< whether sparse regions are upsampled
+  void set_upsampling(bool on) { set([&](DF_L1::Parameters& p) { p.upsampling = on; }); } ///< \sa `upsampling()`
+  int upsampling_neighbors() const { return parameters_.upsampling_neighbors; } ///< k of the density test
+  void set_upsampling_neighbors(int k) { set([&](DF_L1::Parameters& p) { p.upsampling_neighbors = k; }); } ///< \sa `upsampling_neighbors()`
+  /// r of the density test (input units; default 3 d_bb / cbrt(N), N the input points)
+  double upsampling_radius() const
+  {
+    return parameters_.upsampling_radius ? *parameters_.upsampling_radius
+                                         : DF_L1::internal::upsampling_radius(parameters::default_values(), diagonal_,
+                                                                              points_.size(), stage_name);
+  }
+  void set_upsampling_radius(double r) { set([&](DF_L1::Parameters& p) { p.upsampling_radius = r; }); } ///< \sa `upsampling_radius()`
+  int voxel_resolution() const { return parameters_.voxel_resolution; } ///< V
+  void set_voxel_resolution(int V) { set([&](DF_L1::Parameters& p) { p.voxel_resolution = V; }); } ///< \sa `voxel_resolution()`
+  /// s0, the size of the coarsest voxels before rounding (input units; default d_bb / 9)
+  double initial_voxel_size() const { return parameters_.initial_voxel_size ? *parameters_.initial_voxel_size : diagonal_ / 9; }
+  void set_initial_voxel_size(double s0) { set([&](DF_L1::Parameters& p) { p.initial_voxel_size = s0; }); } ///< \sa `initial_voxel_size()`
+  int exterior_propagation_steps() const { return parameters_.exterior_propagation_steps; } ///< exterior steps per level
+  /// \sa `exterior_propagation_steps()`
+  void set_exterior_propagation_steps(int n) { set([&](DF_L1::Parameters& p) { p.exterior_propagation_steps = n; }); }
+  /// the largest extent of a removable outlier cluster, in voxels (default max(3, V'/10),
+  /// V' the longest side of the grid, known once the voxels exist)
+  int outlier_component_size() { voxelize(); return resolved_outlier_component_size(); }
+  /// \sa `outlier_component_size()`
+  void set_outlier_component_size(int voxels) { set([&](DF_L1::Parameters& p) { p.outlier_component_size = voxels; }); }
+  double thinning_coefficient() const { return parameters_.thinning_coefficient; } ///< c of Eq. 2
+  void set_thinning_coefficient(double c) { set([&](DF_L1::Parameters& p) { p.thinning_coefficient = c; }); } ///< \sa `thinning_coefficient()`
+  double spur_length_ratio() const { return parameters_.spur_length_ratio; } ///< spur pruning of the initial graph
+  void set_spur_length_ratio(double x) { set([&](DF_L1::Parameters& p) { p.spur_length_ratio = x; }); } ///< \sa `spur_length_ratio()`
+  DF_L1::Skeletonization_method skeletonization_method() const { return parameters_.skeletonization_method; } ///< refinement method
+  /// \sa `skeletonization_method()`
+  void set_skeletonization_method(DF_L1::Skeletonization_method m) { set([&](DF_L1::Parameters& p) { p.skeletonization_method = m; }); }
+  std::size_t number_of_samples() const { return parameters_.number_of_samples; } ///< M requested (at most the points are used)
+  void set_number_of_samples(std::size_t m) { set([&](DF_L1::Parameters& p) { p.number_of_samples = m; }); } ///< \sa `number_of_samples()`
+  double repulsion_coefficient() const { return parameters_.repulsion_coefficient; } ///< u of Eq. 8
+  void set_repulsion_coefficient(double u) { set([&](DF_L1::Parameters& p) { p.repulsion_coefficient = u; }); } ///< \sa `repulsion_coefficient()`
+  /// h0, the initial support radius (input units; default 2 d_bb / cbrt(N), N the kept
+  /// and added points, known once upsampled)
+  double initial_support_radius() { upsample(); return resolved_initial_support_radius(); }
+  void set_initial_support_radius(double h) { set([&](DF_L1::Parameters& p) { p.initial_support_radius = h; }); } ///< \sa `initial_support_radius()`
+  double support_radius_growth() const { return parameters_.support_radius_growth; } ///< growth ratio of h between stages
+  void set_support_radius_growth(double r) { set([&](DF_L1::Parameters& p) { p.support_radius_growth = r; }); } ///< \sa `support_radius_growth()`
+  double branch_directionality() const { return parameters_.branch_directionality; } ///< sigma threshold of branch points
+  void set_branch_directionality(double s) { set([&](DF_L1::Parameters& p) { p.branch_directionality = s; }); } ///< \sa `branch_directionality()`
+  int number_of_iterations() const { return parameters_.number_of_iterations; } ///< maximum iterations per stage
+  void set_number_of_iterations(int n) { set([&](DF_L1::Parameters& p) { p.number_of_iterations = n; }); } ///< \sa `number_of_iterations()`
+  int contraction_stages() const { return parameters_.contraction_stages; } ///< maximum support-radius stages
+  void set_contraction_stages(int n) { set([&](DF_L1::Parameters& p) { p.contraction_stages = n; }); } ///< \sa `contraction_stages()`
+  /// @}
+
+private:
+  static constexpr const char* stage_name = "skeletonization"; // in error messages
+
+  // The stage functions in pipeline order, as `DF_L1::Parameter_info::stage` names them.
+  static constexpr int number_of_stages = 9;
+  static int stage_index(const char* stage)
+  {
+    static const char* const stages[number_of_stages] = {"flag_outliers", "denoise", "upsample", "voxelize",
+                                                         "remove_outlier_voxels", "compute_distance_field",
+                                                         "extract_initial_skeleton", "contract", "convert_to_skeleton"};
+    for(int i = 0; i < number_of_stages; ++i)
+      if(std::string(stage) == stages[i])
+        return i;
+    return 0;
+  }
+
+  // Changes a copy of the parameters and sets it.
+  template <class Change>
+  void set(Change change)
+  {
+    DF_L1::Parameters p = parameters_;
+    change(p);
+    set_parameters(p);
+  }
+
+  // Discards the results of the stage `first` (in the order of stage_index()) and after.
+  void discard_from(int first)
+  {
+    if(first <= 0)
+    {
+      sparse_outliers_.clear();
+      sparse_outlier_count_ = 0;
+    }
+    if(first <= 1)
+    {
+      denoise_checked_ = denoised_ = false;
+      surface_noise_ = residual_growth_ = 0;
+      kept_points_.clear();
+    }
+    if(first <= 2)
+    {
+      upsampled_ = false;
+      added_points_.clear();
+    }
+    if(first <= 3)
+      raw_grid_.reset();
+    if(first <= 4)
+    {
+      grid_.reset();
+      outliers_.clear();
+      outlier_count_ = 0;
+    }
+    if(first <= 5)
+      field_.reset();
+    if(first <= 6)
+      initial_.reset();
+    if(first <= 7)
+      contracted_.reset();
+    if(first <= 8)
+      skeleton_.reset();
+  }
+
+  // Points on a plane (or a line) enclose no volume, yet the voxels between their samples
+  // can look enclosed and give a meaningless skeleton: refuse them with a clear message.
+  void check_volume(double voxel_size) const
+  {
+    Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+    for(const Point& p : points_)
+      mean += Eigen::Vector3d(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
+    mean /= double(points_.size());
+    Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
+    for(const Point& p : points_)
+    {
+      const Eigen::Vector3d d = Eigen::Vector3d(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())) - mean;
+      covariance += d * d.transpose();
+    }
+    covariance /= double(points_.size());
+    const double thickness = std::sqrt((std::max)(0.0, Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(covariance).eigenvalues()(0)));
+    if(thickness < 0.25 * voxel_size)
+      throw DF_L1::Invalid_input("no skeleton: the " + std::to_string(points_.size()) +
+                                 " points lie on a plane (RMS distance to it under a quarter of a voxel); they enclose no volume");
+  }
+
+  // h0 as set, or derived from the number of kept and added points (once upsampled)
+  double resolved_initial_support_radius() const
+  {
+    return parameters_.initial_support_radius
+             ? *parameters_.initial_support_radius
+             : DF_L1::internal::default_initial_support_radius(diagonal_, kept_points_.size() + added_points_.size());
+  }
+
+  // the outlier size as set, or derived from the grid (once voxelized)
+  int resolved_outlier_component_size() const
+  {
+    return parameters_.outlier_component_size ? *parameters_.outlier_component_size
+                                              : DF_L1::internal::default_outlier_component_size(raw_grid_->dims);
+  }
+
+  // the points the grid and the contraction are built from
+  std::vector<Point> kept_and_added_points() const
+  {
+    std::vector<Point> all = kept_points_;
+    all.insert(all.end(), added_points_.begin(), added_points_.end());
+    return all;
+  }
+
+  std::vector<Point> points_;
+  double diagonal_ = 0;
+  DF_L1::Parameters parameters_;
+
+  std::vector<bool> sparse_outliers_, outliers_;
+  std::size_t sparse_outlier_count_ = 0, outlier_count_ = 0;
+  bool denoise_checked_ = false, denoised_ = false;
+  double surface_noise_ = 0, residual_growth_ = 0;
+  std::vector<Point> kept_points_; // the points that are not scattered outliers, smoothed when denoised
+  bool upsampled_ = false;
+  std::vector<Point> added_points_;
+  std::unique_ptr<Voxel_grid> raw_grid_, grid_;
+  DF_L1::Outlier_voxel_statistics outlier_voxel_statistics_;
+  std::unique_ptr<Distance_field> field_;
+  std::unique_ptr<Initial_skeleton> initial_;
+  std::unique_ptr<Contracted_samples> contracted_;
+  std::unique_ptr<Skeleton> skeleton_;
+};
+
+} // namespace CGAL
+
+#endif // CGAL_DF_L1_SKELETONIZATION_H
