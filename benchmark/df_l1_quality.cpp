@@ -334,7 +334,7 @@ int main(int argc, char* argv[])
   ctx.failure_sheet = o.failure_sheet;
   const std::string md = DF_L1_quality::markdown_report(rows, previous, ctx);
   if(!o.markdown.empty())
-    CGAL::DF_L1::internal::write_file_atomically(o.markdown, [&](std::ostream& out) { out << md; });
+    CGAL::DF_L1::write_file_atomically(o.markdown, [&](std::ostream& out) { out << md; });
   auto corpus = [](const Row& r) { return r.kind == "corpus"; };
   const DF_L1_quality::Summary all = DF_L1_quality::summarize(rows, corpus);
   std::size_t scans_ok = 0;

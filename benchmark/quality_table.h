@@ -8,7 +8,7 @@
 /// expectations of the real scans, and the Markdown report that sets a run beside the
 /// previous one.
 
-#include <CGAL/DF_L1_skeleton/internal/atomic_file.h>
+#include <CGAL/DF_L1_skeleton/IO/write_file_atomically.h>
 
 #include <algorithm>
 #include <cctype>
@@ -53,7 +53,7 @@ inline std::string clean_field(std::string s)
 
 inline void write_rows(const std::string& path, const std::vector<Row>& rows)
 {
-  CGAL::DF_L1::internal::write_file_atomically(path, [&](std::ostream& out) {
+  CGAL::DF_L1::write_file_atomically(path, [&](std::ostream& out) {
     out << "kind\tname\tfamily\tdegradation\texpected\tgot\tok\tratio\toutside\tcoverage\tseconds\tpoints\terror\tinitial\n";
     char num[160];
     for(const Row& r : rows) {

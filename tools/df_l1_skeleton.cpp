@@ -12,7 +12,7 @@
 #include <CGAL/DF_L1_skeleton/IO/read_point_cloud.h>
 #include <CGAL/DF_L1_skeleton/IO/write_skeleton.h>
 #include <CGAL/DF_L1_skeleton/IO/write_svg_preview.h>
-#include <CGAL/DF_L1_skeleton/internal/atomic_file.h>
+#include <CGAL/DF_L1_skeleton/IO/write_file_atomically.h>
 #include <CGAL/DF_L1_skeleton/skeleton_statistics.h>
 
 #include <tbb/global_control.h>
@@ -453,7 +453,7 @@ int run(const Settings& s)
     report.text("input", s.input).text("output", s.output).text("version", DF_L1_VERSION)
       .object("parameters", parameters).object("seconds", clock.times()).object("counts", counts)
       .number("peak_memory_mib", peak_memory_mib());
-    DF::internal::write_file_atomically(s.report, [&](std::ostream& os) { os << report.str() << "\n"; });
+    DF::write_file_atomically(s.report, [&](std::ostream& os) { os << report.str() << "\n"; });
   }
   if(!s.quiet)
     std::cerr << "df_l1_skeleton: wrote " << s.output << (s.preview.empty() ? "" : " and " + s.preview)

@@ -5,7 +5,7 @@
 #include <CGAL/DF_L1_skeleton/IO/write_svg_preview.h>
 #include <CGAL/DF_L1_skeleton/Skeleton_graph.h>
 #include <CGAL/DF_L1_skeleton/errors.h>
-#include <CGAL/DF_L1_skeleton/internal/atomic_file.h>
+#include <CGAL/DF_L1_skeleton/IO/write_file_atomically.h>
 #include <CGAL/DF_L1_skeleton/split_into_polylines.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -515,7 +515,7 @@ TEST_CASE("write_file_atomically replaces whole files and cleans up", "[io][writ
 {
   Scratch_dir dir;
   const std::string path = dir.file("f.txt");
-  using CGAL::DF_L1::internal::write_file_atomically;
+  using CGAL::DF_L1::write_file_atomically;
 
   SECTION("replaces an existing file and leaves no temporary")
   {

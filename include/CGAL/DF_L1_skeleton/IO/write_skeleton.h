@@ -10,7 +10,7 @@
 
 #include <CGAL/DF_L1_skeleton/Skeleton_graph.h>
 #include <CGAL/DF_L1_skeleton/errors.h>
-#include <CGAL/DF_L1_skeleton/internal/atomic_file.h>
+#include <CGAL/DF_L1_skeleton/IO/write_file_atomically.h>
 #include <CGAL/DF_L1_skeleton/split_into_polylines.h>
 
 #include <CGAL/number_utils.h>
@@ -207,7 +207,7 @@ template <class Traits>
 void write_skeleton_obj(const std::string& path, const Skeleton_graph<Traits>& skeleton)
 {
   const internal::Skeleton_arrays a = internal::skeleton_arrays(path, skeleton, false);
-  internal::write_file_atomically(path, [&](std::ostream& os) {
+  write_file_atomically(path, [&](std::ostream& os) {
     internal::Text_buffer out(os);
     out << "# DF_L1_skeleton: " << std::to_string(a.points.size()) << " vertices, "
         << std::to_string(a.edges.size()) << " edges\n";
@@ -241,7 +241,7 @@ void write_skeleton_ply(const std::string& path, const Skeleton_graph<Traits>& s
 {
   const internal::Skeleton_arrays a = internal::skeleton_arrays(path, skeleton, true);
   internal::check_ply_int_range(path, a.points.size(), "vertices");
-  internal::write_file_atomically(path, [&](std::ostream& os) {
+  write_file_atomically(path, [&](std::ostream& os) {
     internal::Text_buffer out(os);
     out << "ply\nformat ascii 1.0\ncomment written by DF_L1_skeleton\n";
     out << "element vertex " << std::to_string(a.points.size()) << '\n';
@@ -278,7 +278,7 @@ void write_skeleton_polylines(const std::string& path, const Skeleton_graph<Trai
   const internal::Skeleton_arrays a = internal::skeleton_arrays(path, skeleton, false);
   std::vector<std::vector<std::size_t>> polylines;
   split_into_polylines(skeleton, std::back_inserter(polylines));
-  internal::write_file_atomically(path, [&](std::ostream& os) {
+  write_file_atomically(path, [&](std::ostream& os) {
     internal::Text_buffer out(os);
     for(const auto& pl : polylines) {
       out.integer(static_cast<long long>(pl.size()));
@@ -351,7 +351,7 @@ void write_point_ply(const std::string& path, const PointRange& points,
   }
   internal::check_ply_properties(path, xyz.size(), properties);
 
-  internal::write_file_atomically(path, [&](std::ostream& os) {
+  write_file_atomically(path, [&](std::ostream& os) {
     internal::Text_buffer out(os);
     out << "ply\nformat ascii 1.0\ncomment written by DF_L1_skeleton\n";
     out << "element vertex " << std::to_string(xyz.size()) << '\n';

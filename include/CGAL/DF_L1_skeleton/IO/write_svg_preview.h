@@ -9,7 +9,7 @@
 
 #include <CGAL/DF_L1_skeleton/Skeleton_graph.h>
 #include <CGAL/DF_L1_skeleton/errors.h>
-#include <CGAL/DF_L1_skeleton/internal/atomic_file.h>
+#include <CGAL/DF_L1_skeleton/IO/write_file_atomically.h>
 
 #include <CGAL/number_utils.h>
 
@@ -393,7 +393,7 @@ void write_svg_preview(const std::string& path, const PointRange& points,
   std::vector<internal::Svg_row> svg_rows;
   for(const Preview_panel<Traits>& panel : rows)
     svg_rows.push_back(internal::svg_row(path, panel));
-  internal::write_file_atomically(
+  write_file_atomically(
       path, [&](std::ostream& os) { internal::write_svg(os, pts, svg_rows, opt); });
 }
 
@@ -411,7 +411,7 @@ void write_svg_preview(const std::string& path, const PointRange& points,
                        const Preview_options& opt = Preview_options())
 {
   const std::vector<internal::Svg_point> pts = internal::svg_points(path, points);
-  internal::write_file_atomically(path, [&](std::ostream& os) {
+  write_file_atomically(path, [&](std::ostream& os) {
     internal::write_svg(os, pts, std::vector<internal::Svg_row>(), opt);
   });
 }

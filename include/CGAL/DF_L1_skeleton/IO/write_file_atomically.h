@@ -1,9 +1,9 @@
 // Copyright (c) 2026 DF_L1_skeleton contributors.
 // SPDX-License-Identifier: LGPL-3.0-or-later
-#ifndef CGAL_DF_L1_SKELETON_INTERNAL_ATOMIC_FILE_H
-#define CGAL_DF_L1_SKELETON_INTERNAL_ATOMIC_FILE_H
+#ifndef CGAL_DF_L1_SKELETON_IO_WRITE_FILE_ATOMICALLY_H
+#define CGAL_DF_L1_SKELETON_IO_WRITE_FILE_ATOMICALLY_H
 
-/// \file atomic_file.h
+/// \file write_file_atomically.h
 /// Writing a file "whole or not at all": the content goes to a temporary file
 /// next to the destination, which is renamed over the destination only once it
 /// has been written and closed without error. A reader of the destination thus
@@ -125,6 +125,8 @@ inline std::filesystem::path temporary_path_for(const std::filesystem::path& des
   }
 }
 
+} // namespace internal
+
 /// \ingroup PkgDFL1SkeletonRef
 /// Writes a file whole or not at all.
 ///
@@ -151,8 +153,8 @@ template <class F>
 void write_file_atomically(const std::string& path, F&& write_content, bool binary = false)
 {
   namespace fs = std::filesystem;
-  const fs::path dest = checked_destination(path);
-  const fs::path tmp = temporary_path_for(dest);
+  const fs::path dest = internal::checked_destination(path);
+  const fs::path tmp = internal::temporary_path_for(dest);
 
   std::ios_base::openmode mode = std::ios_base::out | std::ios_base::trunc;
   if(binary)
@@ -160,14 +162,14 @@ void write_file_atomically(const std::string& path, F&& write_content, bool bina
 
   // Declared before the stream so that the stream is closed before the file is
   // removed (an open file cannot be removed on Windows).
-  Temporary_file_guard guard(tmp);
+  internal::Temporary_file_guard guard(tmp);
   errno = 0;
   std::ofstream os(tmp, mode);
   if(!os) {
     const int err = errno; // before anything else can change it
     throw Write_error("cannot write '" + path + "': cannot create a file in '" +
                       tmp.parent_path().string() + "': " +
-                      errno_reason(err, "cannot open file for writing"));
+                      internal::errno_reason(err, "cannot open file for writing"));
   }
   os.imbue(std::locale::classic());
 
@@ -179,14 +181,14 @@ void write_file_atomically(const std::string& path, F&& write_content, bool bina
   if(!os) {
     const int err = errno;
     throw Write_error("cannot write '" + path + "': writing failed: " +
-                      errno_reason(err, "output error (disk full?)"));
+                      internal::errno_reason(err, "output error (disk full?)"));
   }
   errno = 0;
   os.close();
   if(os.fail()) {
     const int err = errno;
     throw Write_error("cannot write '" + path + "': closing the file failed: " +
-                      errno_reason(err, "output error (disk full?)"));
+                      internal::errno_reason(err, "output error (disk full?)"));
   }
 
   std::error_code ec;
@@ -203,8 +205,7 @@ void write_file_atomically(const std::string& path, F&& write_content, bool bina
   guard.release();
 }
 
-} // namespace internal
 } // namespace DF_L1
 } // namespace CGAL
 
-#endif // CGAL_DF_L1_SKELETON_INTERNAL_ATOMIC_FILE_H
+#endif // CGAL_DF_L1_SKELETON_IO_WRITE_FILE_ATOMICALLY_H
