@@ -19,8 +19,8 @@
 #include "bench_report.h"
 #include "heap_settings.h"
 
-#include "support/skeleton_quality.h"
-#include "support/synthetic_shapes.h"
+#include "evaluation/skeleton_quality.h"
+#include "evaluation/synthetic_shapes.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/DF_L1_skeleton.h>

@@ -2,13 +2,13 @@
 // SPDX-License-Identifier: LGPL-3.0-or-later
 //
 // df_l1_quality: runs the library with its defaults on the procedural corpus
-// (test/support/shape_corpus.h) under every degradation and on the real scans of
+// (tools/evaluation/shape_corpus.h) under every degradation and on the real scans of
 // ../shared/data, and writes the rows (TSV), previews (SVG) and the Markdown report.
 // scripts/quality.sh runs it; see its header for the options.
 
 #include "quality_table.h"
-#include "support/shape_corpus.h"
-#include "support/skeleton_quality.h"
+#include "evaluation/shape_corpus.h"
+#include "evaluation/skeleton_quality.h"
 
 #include <CGAL/DF_L1_skeleton.h>
 #include <CGAL/DF_L1_skeleton/IO/read_point_cloud.h>

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The quality evaluation: the library with its defaults on the procedural corpus (208
-# shapes in 8 families x 9 degradations, test/support/shape_corpus.h) and on every real
+# shapes in 8 families x 9 degradations, tools/evaluation/shape_corpus.h) and on every real
 # scan of ../shared/data that has an expectation in expected_topology.json (skipped with
 # a message when the folder is absent). Writes benchmark/QUALITY.md with the previous
 # run's figures beside the new ones (from the committed benchmark/quality_results.tsv,

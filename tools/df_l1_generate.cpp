@@ -2,17 +2,17 @@
 // SPDX-License-Identifier: LGPL-3.0-or-later
 //
 // df_l1_generate: writes a synthetic point cloud with a known skeleton (see
-// test/support/synthetic_shapes.h) to an .xyz file.
+// tools/evaluation/synthetic_shapes.h) to an .xyz file.
 //
 //   df_l1_generate SHAPE VARIANT N SEED OUTPUT.xyz
 //   df_l1_generate --list
 //
 // SHAPE is a named shape or a shape of the procedural corpus (FAMILY_INDEX, e.g.
-// trees_12; test/support/shape_corpus.h), VARIANT a variant or a corpus degradation
+// trees_12; tools/evaluation/shape_corpus.h), VARIANT a variant or a corpus degradation
 // (e.g. noise_0.6, outliers_3).
 
-#include "support/shape_corpus.h"
-#include "support/synthetic_shapes.h"
+#include "evaluation/shape_corpus.h"
+#include "evaluation/synthetic_shapes.h"
 
 #include <cstdint>
 #include <exception>

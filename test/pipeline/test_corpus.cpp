@@ -1,8 +1,8 @@
 // The procedural corpus (support/shape_corpus.h): its shapes are what they claim to be,
 // and a sample of it, skeletonized with the defaults, keeps the quality the full run
 // (scripts/quality.sh) measured. The full corpus is not run here: it takes minutes.
-#include "support/shape_corpus.h"
-#include "support/skeleton_quality.h"
+#include "evaluation/shape_corpus.h"
+#include "evaluation/skeleton_quality.h"
 
 #include <CGAL/DF_L1_skeleton.h>
 

@@ -1,6 +1,6 @@
 // Stage 0b: the surface-noise estimate and the smoothing onto local quadrics.
-#include "support/shape_corpus.h"
-#include "support/synthetic_shapes.h"
+#include "evaluation/shape_corpus.h"
+#include "evaluation/synthetic_shapes.h"
 
 #include <CGAL/DF_L1_skeleton.h>
 #include <CGAL/DF_L1_skeleton/denoise_point_set.h>

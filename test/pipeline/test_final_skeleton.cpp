@@ -1,7 +1,7 @@
 // The final skeleton (paper, section 6): the contraction, the branches and the graph, on
 // synthetic shapes with known skeletons.
-#include "support/skeleton_quality.h"
-#include "support/synthetic_shapes.h"
+#include "evaluation/skeleton_quality.h"
+#include "evaluation/synthetic_shapes.h"
 
 #include <CGAL/DF_L1_skeleton.h>
 

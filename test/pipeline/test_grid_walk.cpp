@@ -1,5 +1,5 @@
 // The grid walk behind the inside test of bridges (issue 4).
-#include "support/synthetic_shapes.h"
+#include "evaluation/synthetic_shapes.h"
 
 #include <CGAL/DF_L1_skeleton.h>
 #include <CGAL/DF_L1_skeleton/internal/grid_walk.h>

@@ -1,6 +1,6 @@
 // Geometry and topology of the initial skeleton (paper, section 5) on synthetic shapes
 // with known skeletons, and the voxel topology it relies on.
-#include "support/synthetic_shapes.h"
+#include "evaluation/synthetic_shapes.h"
 
 #include <CGAL/DF_L1_skeleton.h>
 #include <CGAL/DF_L1_skeleton/internal/contractible_cycles.h>

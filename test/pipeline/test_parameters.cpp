@@ -1,6 +1,6 @@
 // The parameter record: one table of defaults and ranges, read by the named parameters,
 // the class's getters and setters, and the text form the tool uses.
-#include "support/synthetic_shapes.h"
+#include "evaluation/synthetic_shapes.h"
 
 #include <CGAL/DF_L1_skeleton.h>
 #include <CGAL/DF_L1_skeleton/Parameters.h>

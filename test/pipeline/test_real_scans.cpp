@@ -1,7 +1,7 @@
 // The whole pipeline on the real scans of ../shared/data (skipped, with a message, when
 // the folder is absent): what must hold on any scan, and the topology the issue names
 // for the fertility statue (genus 4).
-#include "support/skeleton_quality.h"
+#include "evaluation/skeleton_quality.h"
 
 #include <CGAL/DF_L1_skeleton.h>
 #include <CGAL/DF_L1_skeleton/IO/read_point_cloud.h>

@@ -2,8 +2,8 @@
 // hand from the true axes of synthetic shapes, and perturbed in known ways; plus the
 // hidden quality table of the initial skeleton over every shape and variant:
 //   df_l1_test_pipeline "[.quality-table]"
-#include "support/skeleton_quality.h"
-#include "support/synthetic_shapes.h"
+#include "evaluation/skeleton_quality.h"
+#include "evaluation/synthetic_shapes.h"
 
 #include <CGAL/DF_L1_skeleton.h>
 #include <CGAL/DF_L1_skeleton/Skeleton_graph.h>

@@ -1,5 +1,5 @@
 // The DF_L1_skeletonization class: stages one by one, derived parameters, errors.
-#include "support/synthetic_shapes.h"
+#include "evaluation/synthetic_shapes.h"
 
 #include <CGAL/DF_L1_skeleton.h>
 

@@ -4,7 +4,7 @@
 // Tests of the synthetic point-cloud generator itself: the other pipeline tests
 // judge the skeletoniser against its ground truth, so that ground truth must hold.
 
-#include "support/synthetic_shapes.h"
+#include "evaluation/synthetic_shapes.h"
 
 #include <catch2/catch.hpp>
 

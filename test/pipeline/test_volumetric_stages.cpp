@@ -1,6 +1,6 @@
 // Geometry of the volumetric stages on synthetic shapes with known skeletons:
 // voxel labels, distance field, outlier removal, upsampling, scale invariance.
-#include "support/synthetic_shapes.h"
+#include "evaluation/synthetic_shapes.h"
 #include "support/voxel_checks.h"
 
 #include <CGAL/DF_L1_skeleton/compute_distance_field.h>

@@ -1,7 +1,7 @@
 // Voxelization of scans that miss a region of the surface as wide as a part (a whole
 // flank): the parity vote keeps the part's interior, without closing the real holes of
 // the shape; and the vote itself on small voxel shells.
-#include "support/synthetic_shapes.h"
+#include "evaluation/synthetic_shapes.h"
 #include "support/voxel_checks.h"
 
 #include <CGAL/DF_L1_skeleton.h>

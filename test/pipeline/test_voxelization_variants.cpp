@@ -1,6 +1,6 @@
 // Voxelization of degraded samples: the interior must survive one-sided holes, sparse
 // and uneven sampling and noise, without filling the real holes of the shape.
-#include "support/synthetic_shapes.h"
+#include "evaluation/synthetic_shapes.h"
 #include "support/voxel_checks.h"
 
 #include <CGAL/DF_L1_skeleton/compute_distance_field.h>

@@ -2,7 +2,7 @@
 // naming the file, no output file on failure, outputs and report on success.
 #include <catch2/catch.hpp>
 
-#include "support/synthetic_shapes.h"
+#include "evaluation/synthetic_shapes.h"
 
 #include <CGAL/DF_L1_skeleton/Parameters.h>
 
@@ -97,7 +97,7 @@ std::string read_text(const std::string& path)
   return s.str();
 }
 
-// A clean synthetic shape of test/support/synthetic_shapes.h (what df_l1_generate writes).
+// A clean synthetic shape of tools/evaluation/synthetic_shapes.h (what df_l1_generate writes).
 std::string shape_input(const Scratch& scratch, const std::string& shape, std::size_t n)
 {
   const std::string path = scratch.path(shape + ".xyz");

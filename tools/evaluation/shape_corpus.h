@@ -28,7 +28,7 @@
 /// - `close_parts`: parts that come within 1 to 2 voxels of each other without touching;
 /// - `disjoint`: 2 to 5 separate objects.
 
-#include "support/synthetic_shapes.h"
+#include "evaluation/synthetic_shapes.h"
 
 #include <algorithm>
 #include <cmath>

@@ -16,7 +16,7 @@
 /// Also: `run_quality_table()`, which runs a skeleton producer on every shape and
 /// variant and prints one line per case with a per-variant summary.
 
-#include "support/synthetic_shapes.h"
+#include "evaluation/synthetic_shapes.h"
 
 #include <boost/graph/adjacency_list.hpp>
 
