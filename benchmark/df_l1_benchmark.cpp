@@ -213,7 +213,7 @@ public:
     stage("outlier_voxels", &Skeletonization::remove_outlier_voxels);
     stage("distance", &Skeletonization::compute_distance_field);
     stage("initial", &Skeletonization::extract_initial_skeleton);
-    stage("contraction", &Skeletonization::contract);
+    stage("contraction", &Skeletonization::contract_until_convergence);
     projection_.push_back(0);
     for(const auto& st : s.contracted_samples().stages)
       projection_.back() += st.projection_seconds;

@@ -6,6 +6,8 @@
 
 #include "heap_settings.h"
 #include "options.h"
+#include "report.h"
+#include "stage_clock.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/DF_L1_skeleton.h>
@@ -13,20 +15,14 @@
 #include <CGAL/DF_L1_skeleton/IO/write_skeleton.h>
 #include <CGAL/DF_L1_skeleton/IO/write_svg_preview.h>
 #include <CGAL/DF_L1_skeleton/IO/write_file_atomically.h>
-#include <CGAL/DF_L1_skeleton/skeleton_statistics.h>
 
 #include <tbb/global_control.h>
 
-#include <sys/resource.h>
-
 #include <algorithm>
-#include <chrono>
-#include <cmath>
-#include <iomanip>
+#include <cctype>
 #include <iostream>
 #include <iterator>
 #include <memory>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -58,90 +54,6 @@ struct Settings
   long seed = 0;
   bool quiet = false;
   DF::Parameters parameters; // the library's, set from the options of parameter_table()
-};
-
-double peak_memory_mib()
-{
-  rusage usage{};
-  getrusage(RUSAGE_SELF, &usage);
-  return usage.ru_maxrss / 1024.0; // kilobytes on Linux
-}
-
-// A JSON object written in insertion order, numbers with round-trip precision.
-class Json_object
-{
-public:
-  Json_object& number(const std::string& key, double x)
-  {
-    std::ostringstream s;
-    if(std::isfinite(x))
-      s << std::setprecision(15) << x;
-    else
-      s << "null";
-    return raw(key, s.str());
-  }
-  Json_object& text(const std::string& key, const std::string& value)
-  {
-    std::string quoted = "\"";
-    for(char c : value)
-    {
-      if(c == '"' || c == '\\')
-        quoted += '\\';
-      if(static_cast<unsigned char>(c) < 0x20)
-        c = ' ';
-      quoted += c;
-    }
-    return raw(key, quoted + "\"");
-  }
-  Json_object& boolean(const std::string& key, bool b) { return raw(key, b ? "true" : "false"); }
-  Json_object& object(const std::string& key, const Json_object& o) { return raw(key, o.str("  ")); }
-  Json_object& raw(const std::string& key, const std::string& value)
-  {
-    entries_.emplace_back(key, value);
-    return *this;
-  }
-  // On one line: {"a": 1, "b": 2}.
-  std::string inline_str() const
-  {
-    std::string s = "{";
-    for(std::size_t i = 0; i < entries_.size(); ++i)
-      s += (i ? ", \"" : "\"") + entries_[i].first + "\": " + entries_[i].second;
-    return s + "}";
-  }
-  std::string str(const std::string& indent = "") const
-  {
-    std::string s = "{";
-    for(std::size_t i = 0; i < entries_.size(); ++i)
-      s += (i ? ",\n" : "\n") + indent + "  \"" + entries_[i].first + "\": " + entries_[i].second;
-    return s + "\n" + indent + "}";
-  }
-
-private:
-  std::vector<std::pair<std::string, std::string>> entries_;
-};
-
-class Stage_clock
-{
-public:
-  explicit Stage_clock(bool quiet) : quiet_(quiet) {}
-  template <class F>
-  auto run(const std::string& name, F&& f)
-  {
-    if(!quiet_)
-      std::cerr << "df_l1_skeleton: " << name << "..." << std::flush;
-    const auto start = std::chrono::steady_clock::now();
-    auto result = f();
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    times_.number(name, seconds);
-    if(!quiet_)
-      std::cerr << " " << std::fixed << std::setprecision(3) << seconds << " s\n" << std::defaultfloat;
-    return result;
-  }
-  const Json_object& times() const { return times_; }
-
-private:
-  bool quiet_;
-  Json_object times_;
 };
 
 // The tool's own options, then one per library parameter (made from
@@ -264,19 +176,13 @@ void write_voxels(const std::string& path, const DF::Voxel_grid<Kernel>& grid,
   DF::write_point_ply(path, centres, {label, distance});
 }
 
-// The number of samples contracted (junction points of bridges come on top of them).
-std::size_t contracted_count(const DF::Contracted_samples<Kernel>& c)
-{
-  return c.iterations.empty() ? 0 : c.iterations.front().size();
-}
-
 int run(const Settings& s)
 {
   std::unique_ptr<tbb::global_control> thread_limit;
   if(s.threads > 0)
     thread_limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
                                                          std::size_t(s.threads));
-  Stage_clock clock(s.quiet);
+  df_l1_tool::Stage_clock clock(s.quiet);
   const auto cloud = clock.run("read", [&] { return DF::read_point_cloud<Kernel>(s.input); });
   const std::vector<Point_3>& points = cloud.points;
 
@@ -320,12 +226,13 @@ int run(const Settings& s)
   const DF::Skeleton_graph<Kernel>* final_skeleton = nullptr;
   if(last_stage >= stage_index("final"))
   {
-    stage("contraction", &Skeletonization::contract);
+    stage("contraction", &Skeletonization::contract_until_convergence);
     contracted = &skeletonization.contracted_samples();
     stage("skeleton", &Skeletonization::convert_to_skeleton);
     final_skeleton = &skeletonization.skeleton();
     if(boost::num_vertices(*final_skeleton) == 0)
-      throw DF::Invalid_input(s.input + ": no skeleton: the contraction of " + std::to_string(contracted_count(*contracted)) +
+      throw DF::Invalid_input(s.input + ": no skeleton: the contraction of " +
+                              std::to_string(df_l1_tool::contracted_count(*contracted)) +
                               " samples traced no branch (try --stage initial, or more --samples)");
   }
   // The skeleton written: the last one computed.
@@ -355,105 +262,9 @@ int run(const Settings& s)
 
   if(!s.report.empty())
   {
-    const double voxel_size = CGAL::to_double(grid.voxel_size);
-    Json_object parameters;
-    parameters.text("stage", s.stage)
-      .number("threads", s.threads > 0 ? s.threads : double(tbb::this_task_arena::max_concurrency()))
-      .number("seed", double(s.seed))
-      .number("bbox_diagonal", skeletonization.bbox_diagonal())
-      .text("denoising", DF::parameter_text(s.parameters, "denoising"))
-      .number("denoising_neighbors", skeletonization.denoising_neighbors())
-      .boolean("upsampling", skeletonization.upsampling())
-      .number("upsampling_neighbors", skeletonization.upsampling_neighbors())
-      .number("upsampling_radius", skeletonization.upsampling_radius())
-      .number("voxel_resolution", skeletonization.voxel_resolution())
-      .number("initial_voxel_size", skeletonization.initial_voxel_size())
-      .number("initial_voxel_size_used", grid.levels.front().voxel_size)
-      .number("refinement_levels", double(grid.levels.size() - 1))
-      .number("voxel_size", voxel_size)
-      .number("exterior_propagation_steps", skeletonization.exterior_propagation_steps())
-      .number("outlier_component_size", skeletonization.outlier_component_size());
-    if(initial)
-      parameters.number("thinning_coefficient", skeletonization.thinning_coefficient())
-        .raw("thinning_parameters", "[" + std::to_string(initial->thinning_parameters[0] * voxel_size) + ", " +
-                                     std::to_string(initial->thinning_parameters[1] * voxel_size) + ", " +
-                                     std::to_string(initial->thinning_parameters[2] * voxel_size) + "]")
-        .number("spur_length_ratio", skeletonization.spur_length_ratio());
-    if(contracted)
-      parameters.text("method", DF::parameter_text(s.parameters, "skeletonization_method"))
-        .number("number_of_samples", double(skeletonization.number_of_samples()))
-        .number("repulsion_coefficient", skeletonization.repulsion_coefficient())
-        .number("initial_support_radius", skeletonization.initial_support_radius())
-        .number("support_radius_growth", skeletonization.support_radius_growth())
-        .number("branch_directionality", skeletonization.branch_directionality())
-        .number("number_of_iterations", skeletonization.number_of_iterations())
-        .number("contraction_stages", skeletonization.contraction_stages());
-    Json_object counts;
-    counts.number("input_points", double(points.size()))
-      .number("added_points", double(skeletonization.added_points().size()))
-      .number("outlier_points", double(skeletonization.number_of_outliers()))
-      .number("sparse_outlier_points", double(skeletonization.number_of_sparse_outliers()))
-      .number("surface_noise", skeletonization.surface_noise())
-      .number("residual_growth", skeletonization.residual_growth())
-      .boolean("denoised", skeletonization.denoised())
-      .number("outlier_clusters", double(skeletonization.outlier_voxel_statistics().components_removed))
-      .number("shape_components", double(skeletonization.outlier_voxel_statistics().components_kept))
-      .raw("grid", "[" + std::to_string(grid.dims[0]) + ", " + std::to_string(grid.dims[1]) + ", " +
-                     std::to_string(grid.dims[2]) + "]")
-      .number("boundary_voxels", double(grid.count(DF::Voxel_label::BOUNDARY)))
-      .number("interior_voxels", double(grid.count(DF::Voxel_label::INTERIOR)))
-      .number("exterior_voxels", double(grid.count(DF::Voxel_label::EXTERIOR)))
-      .number("outlier_voxels", double(grid.count(DF::Voxel_label::OUTLIER)));
-    if(field)
-      counts.number("max_distance", CGAL::to_double(field->voxel_size) * field->maximum());
-    // skeleton_*: the skeleton written (the final one with --stage final);
-    // initial_skeleton_*: the initial one, when the final one was written.
-    const auto skeleton_counts = [&](const std::string& prefix, const DF::Skeleton_graph<Kernel>& g) {
-      const DF::Skeleton_statistics st = DF::skeleton_statistics(g);
-      counts.number(prefix + "vertices", double(st.vertices))
-        .number(prefix + "edges", double(st.edges))
-        .number(prefix + "components", double(st.components))
-        .number(prefix + "cycles", double(st.cycles))
-        .number(prefix + "end_points", double(st.end_points))
-        .number(prefix + "junctions", double(st.junctions));
-    };
-    if(initial)
-    {
-      counts.number("skeleton_voxels", double(initial->points.size()));
-      skeleton_counts("skeleton_", *skeleton);
-    }
-    if(contracted)
-    {
-      skeleton_counts("initial_skeleton_", initial->graph);
-      std::string stages = "[";
-      for(std::size_t i = 0; i < contracted->stages.size(); ++i)
-      {
-        const DF::Contraction_stage& st = contracted->stages[i];
-        Json_object o;
-        o.number("iterations", st.iterations)
-          .number("min_radius", st.min_radius)
-          .number("mean_radius", st.mean_radius)
-          .number("max_radius", st.max_radius)
-          .number("free_samples", double(st.free_samples))
-          .number("branch_samples", double(st.branch_samples))
-          .number("projection_seconds", st.projection_seconds);
-        stages += (i ? ",\n      " : "\n      ") + o.inline_str();
-      }
-      stages += contracted->stages.empty() ? "]" : "\n    ]";
-      int iterations = 0;
-      for(const DF::Contraction_stage& st : contracted->stages)
-        iterations += st.iterations;
-      counts.number("samples", double(contracted_count(*contracted)))
-        .number("branch_points",
-                double(std::count(contracted->roles.begin(), contracted->roles.end(), DF::Sample_role::BRANCH)))
-        .number("iterations", iterations)
-        .raw("contraction_stages", stages);
-    }
-    Json_object report;
-    report.text("input", s.input).text("output", s.output).text("version", DF_L1_VERSION)
-      .object("parameters", parameters).object("seconds", clock.times()).object("counts", counts)
-      .number("peak_memory_mib", peak_memory_mib());
-    DF::write_file_atomically(s.report, [&](std::ostream& os) { os << report.str() << "\n"; });
+    const std::string report =
+      df_l1_tool::report_json(s, skeletonization, grid, field, initial, contracted, final_skeleton, clock);
+    DF::write_file_atomically(s.report, [&](std::ostream& os) { os << report << "\n"; });
   }
   if(!s.quiet)
     std::cerr << "df_l1_skeleton: wrote " << s.output << (s.preview.empty() ? "" : " and " + s.preview)

@@ -73,6 +73,7 @@ public:
   typedef DF_L1::Distance_field<Traits> Distance_field;     ///< distance of every voxel
   typedef DF_L1::Initial_skeleton<Traits> Initial_skeleton; ///< skeleton voxels and their graph
   typedef DF_L1::Contracted_samples<Traits> Contracted_samples; ///< samples, branches and iterations of the contraction
+  typedef DF_L1::Sample_contraction<Traits, ConcurrencyTag> Sample_contraction; ///< the contraction, stage by stage
   /// @}
 
   /// Copies the points and reads the parameters.
@@ -248,23 +249,42 @@ public:
     DF_L1::assign_points_to_skeleton<ConcurrencyTag>(points_, outliers_, initial_->graph);
   }
 
-  /// Contracts samples of the kept and added points onto the skeleton
-  /// (`contract_samples()`), tracing branches and bridges between stages.
-  void contract()
+  /// Runs one support-radius stage of the contraction of samples of the kept and added
+  /// points onto the skeleton (`Sample_contraction::contract()`): the L1-median iterations
+  /// of Eq. 8 for the free samples, then the tracing of branches and bridges. The first
+  /// call picks the samples first. Returns `false`, running nothing, once the contraction
+  /// has converged. `contracted_samples()` shows the samples after the stages run so far.
+  bool contract()
   {
-    if(contracted_)
-      return;
-    extract_initial_skeleton();
-    const std::vector<Point> all = kept_and_added_points();
-    contracted_ = std::make_unique<Contracted_samples>(DF_L1::contract_samples<ConcurrencyTag>(
-      all, *field_, *initial_,
-      parameters::skeletonization_method(parameters_.skeletonization_method,
-      parameters::repulsion_coefficient(parameters_.repulsion_coefficient,
-      parameters::initial_support_radius(resolved_initial_support_radius(),
-      parameters::support_radius_growth(parameters_.support_radius_growth,
-      parameters::branch_directionality(parameters_.branch_directionality,
-      parameters::contraction_stages(parameters_.contraction_stages,
-      parameters::number_of_iterations(parameters_.number_of_iterations).number_of_samples(parameters_.number_of_samples)))))))));
+    if(!contraction_)
+    {
+      extract_initial_skeleton();
+      contraction_ = std::make_unique<Sample_contraction>(
+        kept_and_added_points(), *field_, *initial_,
+        parameters::skeletonization_method(parameters_.skeletonization_method,
+        parameters::repulsion_coefficient(parameters_.repulsion_coefficient,
+        parameters::initial_support_radius(resolved_initial_support_radius(),
+        parameters::support_radius_growth(parameters_.support_radius_growth,
+        parameters::branch_directionality(parameters_.branch_directionality,
+        parameters::contraction_stages(parameters_.contraction_stages,
+        parameters::number_of_iterations(parameters_.number_of_iterations)
+          .number_of_samples(parameters_.number_of_samples))))))));
+    }
+    const bool ran = contraction_->contract();
+    if(ran || !contracted_)
+    {
+      contracted_ = std::make_unique<Contracted_samples>(contraction_->result());
+      skeleton_.reset();
+    }
+    return ran;
+  }
+
+  /// Runs the stages of the contraction until it converges (`contract_samples()`).
+  void contract_until_convergence()
+  {
+    while(contract())
+    {
+    }
   }
 
   /// Builds the final skeleton from the contracted samples (`build_skeleton_graph()`)
@@ -273,7 +293,7 @@ public:
   {
     if(skeleton_)
       return;
-    contract();
+    contract_until_convergence();
     skeleton_ = std::make_unique<Skeleton>(DF_L1::build_skeleton_graph(*contracted_, *field_, *initial_));
     DF_L1::assign_points_to_skeleton<ConcurrencyTag>(points_, outliers_, *skeleton_);
   }
@@ -317,8 +337,15 @@ public:
   const Distance_field& distance_field() { compute_distance_field(); return *field_; }
   /// the initial skeleton: the skeleton voxels S and a curve graph through them
   const Initial_skeleton& initial_skeleton() { extract_initial_skeleton(); return *initial_; }
-  /// the contracted samples, their branches, and the samples after every iteration
-  const Contracted_samples& contracted_samples() { contract(); return *contracted_; }
+  /// the contracted samples, their branches, and the samples after every iteration: as
+  /// the stages run by `contract()` left them, or all stages when the contraction has not
+  /// started
+  const Contracted_samples& contracted_samples()
+  {
+    if(!contracted_)
+      contract_until_convergence();
+    return *contracted_;
+  }
   /// the final skeleton
   const Skeleton& skeleton() { convert_to_skeleton(); return *skeleton_; }
   /// @}
@@ -462,7 +489,10 @@ private:
     if(first <= 6)
       initial_.reset();
     if(first <= 7)
+    {
+      contraction_.reset();
       contracted_.reset();
+    }
     if(first <= 8)
       skeleton_.reset();
   }
@@ -526,7 +556,8 @@ private:
   DF_L1::Outlier_voxel_statistics outlier_voxel_statistics_;
   std::unique_ptr<Distance_field> field_;
   std::unique_ptr<Initial_skeleton> initial_;
-  std::unique_ptr<Contracted_samples> contracted_;
+  std::unique_ptr<Sample_contraction> contraction_; // the contraction in progress
+  std::unique_ptr<Contracted_samples> contracted_;  // its samples after the last stage run
   std::unique_ptr<Skeleton> skeleton_;
 };
 

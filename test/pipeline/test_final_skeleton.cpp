@@ -292,3 +292,40 @@ TEST_CASE("plain L1-medial baseline: runs the same engine without guidance", "[f
   for(const DF::Contraction_stage& stage : s.contracted_samples().stages)
     CHECK(stage.min_radius == Approx(stage.max_radius));
 }
+
+TEST_CASE("final skeleton: contract() runs one support-radius stage at a time", "[final][class]")
+{
+  const Sample sample = sample_of("y_junction", Variant::clean);
+  CGAL::DF_L1_skeletonization<Kernel> stepped(sample.points), at_once(sample.points);
+  std::size_t stages = 0;
+  while(stepped.contract())
+  {
+    ++stages;
+    REQUIRE(stepped.contracted_samples().stages.size() == stages); // the samples after this stage
+    REQUIRE(stages <= 64);
+  }
+  CHECK(stages >= 2);
+  CHECK_FALSE(stepped.contract()); // converged: nothing more runs
+  CHECK(stepped.contracted_samples().stages.size() == stages);
+  at_once.contract_until_convergence();
+  const auto& a = stepped.contracted_samples();
+  const auto& b = at_once.contracted_samples();
+  CHECK(a.points == b.points);
+  CHECK(a.edges == b.edges);
+  CHECK(a.iterations.size() == b.iterations.size());
+  Graph g1, g2;
+  stepped(g1);
+  at_once(g2);
+  CHECK(same_graph(g1, g2));
+
+  // the free stage function gives the same samples
+  std::vector<Kernel::Point_3> contracted_points = stepped.kept_points();
+  contracted_points.insert(contracted_points.end(), stepped.added_points().begin(), stepped.added_points().end());
+  const auto direct = CGAL::DF_L1::contract_samples(contracted_points, stepped.distance_field(), stepped.initial_skeleton());
+  CHECK(direct.points == a.points);
+
+  // a contraction parameter restarts the contraction from its first stage
+  stepped.set_repulsion_coefficient(0.3);
+  CHECK(stepped.contract());
+  CHECK(stepped.contracted_samples().stages.size() == 1);
+}

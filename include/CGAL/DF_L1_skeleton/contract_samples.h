@@ -156,82 +156,95 @@ std::vector<Junction_zone> junction_zones(const Graph& g, const Lookup& lookup)
 ///        stage, default 30), `contraction_stages` (64)
 /// \throws Invalid_input if `points` is empty or has a non-finite coordinate, or a
 ///         parameter is out of range
-template <class ConcurrencyTag = CGAL::Parallel_if_available_tag, class Traits,
-          class NamedParameters = parameters::Default_named_parameters>
-Contracted_samples<Traits> contract_samples(const std::vector<typename Traits::Point_3>& points,
-                                            const Distance_field<Traits>& field,
-                                            const Initial_skeleton<Traits>& initial,
-                                            const NamedParameters& np = parameters::default_values())
+/// \ingroup PkgDFL1SkeletonRef
+/// The contraction of `contract_samples()` one support-radius stage at a time, for a
+/// caller that looks at the samples between stages (`DF_L1_skeletonization::contract()`).
+/// Running `contract()` until it returns `false` and then `result()` gives exactly what
+/// `contract_samples()` returns.
+///
+/// The field and the initial skeleton must outlive the object.
+/// \tparam Traits a model of `Kernel`
+/// \tparam ConcurrencyTag as for `contract_samples()`
+template <class Traits, class ConcurrencyTag = CGAL::Parallel_if_available_tag>
+class Sample_contraction
 {
-  using namespace internal;
-  static constexpr const char* stage = "contract_samples";
   typedef typename Traits::Point_3 Point_3;
-  const CGAL::Identity_property_map<Point_3> identity;
-  const double diagonal = internal::diagonal(checked_bbox(points, identity, stage));
 
-  Contracted_samples<Traits> result;
-  result.method = skeletonization_method(np);
-  const bool guided = result.method == Skeletonization_method::DISTANCE_FIELD_GUIDED;
-  const std::vector<Vec3> input = to_xyz(points, identity);
-  const std::size_t m = number_of_samples(np, points.size(), stage);
-  const double u = repulsion_coefficient(np, stage);
-  const double h0 = initial_support_radius(np, diagonal, points.size(), stage);
-  const double growth = support_radius_growth(np, stage);
-  const double sigma_threshold = branch_directionality(np, stage);
-  const int max_iterations = iterations_per_stage(np, stage);
-  result.initial_support_radius = h0;
-
-  const Field_lookup<Traits> lookup(field);
-  const double voxel = lookup.voxel_size();
-  const double tolerance = (guided ? 0.2 : 0.05) * voxel;
-
-  std::vector<Vec3> attractors;
-  if(guided)
-    for(std::size_t v = 0; v < boost::num_vertices(initial.graph); ++v)
-      attractors.push_back(to_vec3(initial.graph[v].point));
-  const Uniform_grid attractor_grid(attractors, 2 * voxel);
-
-  // The pick of the samples and the gathering of the points for the data term (with
-  // the levels the first stage reads) are independent and both sequential: one each.
-  std::vector<std::size_t> picked;
-  std::optional<Gathered_input> gathered;
-  run_both<ConcurrencyTag>([&] { picked = select_samples(input, m); },
-                           [&] {
-                             gathered.emplace(input, voxel / 4);
-                             gathered->cover_radius(h0);
-                           });
-  Sample_set s;
-  for(std::size_t i : picked)
-    s.x.push_back(input[i]);
-  s.role.assign(s.x.size(), Sample_role::FREE);
-  s.radius.assign(s.x.size(), h0);
-  s.adj.resize(s.x.size());
-  s.junction.assign(s.x.size(), 0);
-  const auto record = [&]() {
-    std::vector<Point_3> positions;
-    positions.reserve(s.size());
-    for(const Vec3& p : s.x)
-      positions.emplace_back(p[0], p[1], p[2]);
-    result.iterations.push_back(std::move(positions));
-  };
-  record();
-
-  Branch_tracer<Traits> tracer(s, guided ? &lookup : nullptr, sigma_threshold, h0,
-                               guided ? junction_zones(initial.graph, lookup) : std::vector<Junction_zone>());
-  int stages_without_branch = 0;
-  const int max_stages = contraction_stages(np, stage);
-  for(int stage_index = 0; stage_index < max_stages; ++stage_index)
+public:
+  /// Picks the samples and prepares the contraction; the parameters and exceptions are
+  /// those of `contract_samples()`.
+  template <class NamedParameters = parameters::Default_named_parameters>
+  Sample_contraction(const std::vector<Point_3>& points, const Distance_field<Traits>& field,
+                     const Initial_skeleton<Traits>& initial, const NamedParameters& np = parameters::default_values())
+      : lookup_(field)
   {
+    using namespace internal;
+    static constexpr const char* stage = "contract_samples";
+    const CGAL::Identity_property_map<Point_3> identity;
+    diagonal_ = internal::diagonal(checked_bbox(points, identity, stage));
+    result_.method = skeletonization_method(np);
+    guided_ = result_.method == Skeletonization_method::DISTANCE_FIELD_GUIDED;
+    const std::vector<Vec3> input = to_xyz(points, identity);
+    const std::size_t m = number_of_samples(np, points.size(), stage);
+    u_ = repulsion_coefficient(np, stage);
+    const double h0 = initial_support_radius(np, diagonal_, points.size(), stage);
+    growth_ = support_radius_growth(np, stage);
+    const double sigma_threshold = branch_directionality(np, stage);
+    max_iterations_ = iterations_per_stage(np, stage);
+    max_stages_ = contraction_stages(np, stage);
+    result_.initial_support_radius = h0;
+
+    voxel_ = lookup_.voxel_size();
+    tolerance_ = (guided_ ? 0.2 : 0.05) * voxel_;
+    if(guided_)
+      for(std::size_t v = 0; v < boost::num_vertices(initial.graph); ++v)
+        attractors_.push_back(to_vec3(initial.graph[v].point));
+    attractor_grid_.emplace(attractors_, 2 * voxel_);
+
+    // The pick of the samples and the gathering of the points for the data term (with
+    // the levels the first stage reads) are independent and both sequential: one each.
+    std::vector<std::size_t> picked;
+    run_both<ConcurrencyTag>([&] { picked = select_samples(input, m); },
+                             [&] {
+                               gathered_.emplace(input, voxel_ / 4);
+                               gathered_->cover_radius(h0);
+                             });
+    for(std::size_t i : picked)
+      s_.x.push_back(input[i]);
+    s_.role.assign(s_.x.size(), Sample_role::FREE);
+    s_.radius.assign(s_.x.size(), h0);
+    s_.adj.resize(s_.x.size());
+    s_.junction.assign(s_.x.size(), 0);
+    record();
+    tracer_.emplace(s_, guided_ ? &lookup_ : nullptr, sigma_threshold, h0,
+                    guided_ ? junction_zones(initial.graph, lookup_) : std::vector<Junction_zone>());
+  }
+
+  /// Runs one support-radius stage: the L1-median iterations of the free samples, then
+  /// the branch tracing. Returns `false`, running nothing, once the contraction has
+  /// converged (no free sample left, the maximum number of stages reached, or, guided,
+  /// three stages without a new branch point).
+  bool contract()
+  {
+    using namespace internal;
+    if(converged_ || stage_index_ >= max_stages_)
+    {
+      converged_ = true;
+      return false;
+    }
     std::vector<std::size_t> free;
     std::vector<double> free_radii;
-    for(std::size_t i = 0; i < s.size(); ++i)
-      if(s.role[i] == Sample_role::FREE && s.radius[i] <= diagonal) // a larger ball holds the whole object: settled
+    for(std::size_t i = 0; i < s_.size(); ++i)
+      if(s_.role[i] == Sample_role::FREE && s_.radius[i] <= diagonal_) // a larger ball holds the whole object: settled
       {
         free.push_back(i);
-        free_radii.push_back(s.radius[i]);
+        free_radii.push_back(s_.radius[i]);
       }
-    if(free.empty() || (stage_index > 0 && free.size() <= 6)) // the L1-medial rule: (almost) none left
-      break;
+    if(free.empty() || (stage_index_ > 0 && free.size() <= 6)) // the L1-medial rule: (almost) none left
+    {
+      converged_ = true;
+      return false;
+    }
     Contraction_stage stats;
     stats.free_samples = free.size();
     stats.min_radius = *std::min_element(free_radii.begin(), free_radii.end());
@@ -241,21 +254,21 @@ Contracted_samples<Traits> contract_samples(const std::vector<typename Traits::P
       sum += h;
     stats.mean_radius = std::clamp(sum / double(free_radii.size()), stats.min_radius, stats.max_radius);
 
-    const double cell = (std::max)(median_of(free_radii) / 2, voxel / 2);
-    gathered->cover_radius(stats.max_radius);
-    const L1_median_step step{*gathered, attractors, guided ? &attractor_grid : nullptr, u};
-    for(int it = 0; it < max_iterations; ++it)
+    const double cell = (std::max)(median_of(free_radii) / 2, voxel_ / 2);
+    gathered_->cover_radius(stats.max_radius);
+    const L1_median_step step{*gathered_, attractors_, guided_ ? &*attractor_grid_ : nullptr, u_};
+    for(int it = 0; it < max_iterations_; ++it)
     {
-      const std::vector<Vec3> previous = s.x;
+      const std::vector<Vec3> previous = s_.x;
       const Uniform_grid sample_grid(previous, cell);
       std::vector<double> moved(free.size(), 0);
       const auto start = std::chrono::steady_clock::now();
       for_each_index<ConcurrencyTag>(free.size(), [&](std::size_t f) {
         const std::size_t i = free[f];
-        const Vec3 next = step(previous, sample_grid, i, s.radius[i]);
-        if(guided && !lookup.allows_step(previous[i], next))
+        const Vec3 next = step(previous, sample_grid, i, s_.radius[i]);
+        if(guided_ && !lookup_.allows_step(previous[i], next))
           return;
-        s.x[i] = next;
+        s_.x[i] = next;
         moved[f] = distance(next, previous[i]);
       }, 16);
       stats.projection_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -264,63 +277,118 @@ Contracted_samples<Traits> contract_samples(const std::vector<typename Traits::P
       double mean = 0;
       for(double d : moved)
         mean += d / double(moved.size());
-      if(mean < tolerance)
+      if(mean < tolerance_)
         break;
     }
 
-    std::vector<char> active(s.size());
-    for(std::size_t i = 0; i < s.size(); ++i)
-      active[i] = s.role[i] != Sample_role::REMOVED;
-    const std::vector<Vec3> positions = s.x;
+    std::vector<char> active(s_.size());
+    for(std::size_t i = 0; i < s_.size(); ++i)
+      active[i] = s_.role[i] != Sample_role::REMOVED;
+    const std::vector<Vec3> positions = s_.x;
     const Uniform_grid sample_grid(positions, cell);
-    const Directionality directionality = compute_directionality<ConcurrencyTag>(positions, active, s.radius, sample_grid);
+    const Directionality directionality = compute_directionality<ConcurrencyTag>(positions, active, s_.radius, sample_grid);
     std::vector<char> centred;
-    if(guided)
+    if(guided_)
     {
-      centred.assign(s.size(), 0);
-      for_each_index<ConcurrencyTag>(s.size(), [&](std::size_t i) {
-        const double tolerance_i = (std::max)(1.5 * voxel, 0.5 * lookup.distance(s.x[i]));
-        attractor_grid.for_each_in_ball(s.x[i], tolerance_i, [&](std::size_t, double) {
+      centred.assign(s_.size(), 0);
+      for_each_index<ConcurrencyTag>(s_.size(), [&](std::size_t i) {
+        const double tolerance_i = (std::max)(1.5 * voxel_, 0.5 * lookup_.distance(s_.x[i]));
+        attractor_grid_->for_each_in_ball(s_.x[i], tolerance_i, [&](std::size_t, double) {
           centred[i] = 1;
           return false;
         });
       });
     }
-    const std::size_t new_branch_points = tracer.run(directionality, centred);
-    stats.branch_samples = std::size_t(std::count(s.role.begin(), s.role.end(), Sample_role::BRANCH));
-    result.stages.push_back(stats);
-    stages_without_branch = new_branch_points > 0 ? 0 : stages_without_branch + 1;
-    if(guided && stages_without_branch >= 3) // every sample has reached the initial skeleton or gave up
-      break;
+    const std::size_t new_branch_points = tracer_->run(directionality, centred);
+    stats.branch_samples = std::size_t(std::count(s_.role.begin(), s_.role.end(), Sample_role::BRANCH));
+    result_.stages.push_back(stats);
+    ++stage_index_;
+    stages_without_branch_ = new_branch_points > 0 ? 0 : stages_without_branch_ + 1;
+    if(guided_ && stages_without_branch_ >= 3) // every sample has reached the initial skeleton or gave up
+    {
+      converged_ = true;
+      return true;
+    }
 
     // Next support radius.
-    for(std::size_t i = 0; i < s.size(); ++i)
+    for(std::size_t i = 0; i < s_.size(); ++i)
     {
-      if(s.role[i] != Sample_role::FREE)
+      if(s_.role[i] != Sample_role::FREE)
         continue;
-      double& h = s.radius[i];
-      if(guided)
+      double& h = s_.radius[i];
+      if(guided_)
       {
-        const Ball_sums c = ball_sums(attractor_grid, attractors, s.x[i], h, 0);
-        if(c.count > 0 && distance(c.mean(), s.x[i]) < voxel)
+        const Ball_sums c = ball_sums(*attractor_grid_, attractors_, s_.x[i], h, 0);
+        if(c.count > 0 && distance(c.mean(), s_.x[i]) < voxel_)
         {
-          h = (std::max)(lookup.distance(c.mean()), 2 * voxel);
+          h = (std::max)(lookup_.distance(c.mean()), 2 * voxel_);
           continue;
         }
       }
-      h = (1 + growth) * h;
+      h = (1 + growth_) * h;
     }
+    return true;
   }
 
-  for(const Vec3& p : s.x)
-    result.points.emplace_back(p[0], p[1], p[2]);
-  result.roles = s.role;
-  result.support_radii = s.radius;
-  for(std::size_t a = 0; a < s.size(); ++a)
-    for(std::size_t b : s.adj[a])
-      if(a < b)
-        result.edges.emplace_back(a, b);
-  return result;
+  /// whether `contract()` has nothing left to do
+  bool converged() const { return converged_; }
+
+  /// The samples as they are now (after the stages run so far), their branches and the
+  /// record of every stage and iteration.
+  Contracted_samples<Traits> result() const
+  {
+    Contracted_samples<Traits> r = result_;
+    for(const internal::Vec3& p : s_.x)
+      r.points.emplace_back(p[0], p[1], p[2]);
+    r.roles = s_.role;
+    r.support_radii = s_.radius;
+    for(std::size_t a = 0; a < s_.size(); ++a)
+      for(std::size_t b : s_.adj[a])
+        if(a < b)
+          r.edges.emplace_back(a, b);
+    return r;
+  }
+
+private:
+  void record()
+  {
+    std::vector<Point_3> positions;
+    positions.reserve(s_.size());
+    for(const internal::Vec3& p : s_.x)
+      positions.emplace_back(p[0], p[1], p[2]);
+    result_.iterations.push_back(std::move(positions));
+  }
+
+  internal::Field_lookup<Traits> lookup_;
+  double diagonal_ = 0, u_ = 0, growth_ = 0, voxel_ = 0, tolerance_ = 0;
+  bool guided_ = true;
+  int max_iterations_ = 0, max_stages_ = 0;
+  std::vector<internal::Vec3> attractors_;
+  std::optional<internal::Uniform_grid> attractor_grid_;
+  std::optional<internal::Gathered_input> gathered_;
+  internal::Sample_set s_;
+  std::optional<internal::Branch_tracer<Traits>> tracer_; // refers to s_: the object is not copied
+  Contracted_samples<Traits> result_; // method, h0, stages and iterations so far
+  int stage_index_ = 0, stages_without_branch_ = 0;
+  bool converged_ = false;
+
+public:
+  Sample_contraction(const Sample_contraction&) = delete;
+  Sample_contraction& operator=(const Sample_contraction&) = delete;
+};
+
+template <class ConcurrencyTag = CGAL::Parallel_if_available_tag, class Traits,
+          class NamedParameters = parameters::Default_named_parameters>
+Contracted_samples<Traits> contract_samples(const std::vector<typename Traits::Point_3>& points,
+                                            const Distance_field<Traits>& field,
+                                            const Initial_skeleton<Traits>& initial,
+                                            const NamedParameters& np = parameters::default_values())
+{
+  Sample_contraction<Traits, ConcurrencyTag> contraction(points, field, initial, np);
+  while(contraction.contract())
+  {
+  }
+  return contraction.result();
 }
 
 } // namespace DF_L1
