@@ -58,9 +58,17 @@ namespace CGAL {
 /// the input (the diagonal d_bb of its bounding box, or the voxel size), so a scaled
 /// cloud gives a scaled result; the getters return the values actually used.
 ///
+/// Numbers: the points are kept in the kernel's type; the voxel grid's origin and voxel
+/// size are the kernel's `FT`; everything else (distance field, thinning, contraction,
+/// skeleton positions before they are stored as `Point_3`) is computed in `double`. With
+/// `Epick` and `Simple_cartesian<double>` the results are identical; with exact
+/// constructions or `float` a grid boundary may fall on the other side of a point, which
+/// can move a vertex by up to a voxel (tested in `test/pipeline/test_genericity.cpp`).
+///
 /// \tparam Traits a model of `Kernel`
 /// \tparam ConcurrencyTag `CGAL::Sequential_tag`, `CGAL::Parallel_tag` or
-///         `CGAL::Parallel_if_available_tag`; results do not depend on the number of threads
+///         `CGAL::Parallel_if_available_tag`, honoured by every stage; results do not
+///         depend on the number of threads
 template <class Traits, class ConcurrencyTag = CGAL::Parallel_if_available_tag>
 class DF_L1_skeletonization
 {
@@ -229,7 +237,7 @@ public:
     if(initial_)
       return;
     compute_distance_field();
-    initial_ = std::make_unique<Initial_skeleton>(DF_L1::extract_initial_skeleton(
+    initial_ = std::make_unique<Initial_skeleton>(DF_L1::extract_initial_skeleton<ConcurrencyTag>(
       *field_, parameters::thinning_coefficient(parameters_.thinning_coefficient,
                parameters::spur_length_ratio(parameters_.spur_length_ratio, parameters::thin_parts(!denoised_, parameters::occupied_depth(denoised_,
                parameters::surface_noise(surface_noise_)))))));

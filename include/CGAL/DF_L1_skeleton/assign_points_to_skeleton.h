@@ -10,6 +10,7 @@
 #include <CGAL/DF_L1_skeleton/errors.h>
 #include <CGAL/DF_L1_skeleton/internal/parallel_for.h>
 
+#include <CGAL/Named_function_parameters.h>
 #include <CGAL/Orthogonal_k_neighbor_search.h>
 #include <CGAL/Search_traits_3.h>
 #include <CGAL/Search_traits_adapter.h>
@@ -32,15 +33,27 @@ namespace DF_L1 {
 /// in parallel and the lists filled in point order, so the result does not depend on the
 /// number of threads.
 /// \tparam ConcurrencyTag `CGAL::Sequential_tag` or `CGAL::Parallel_tag`
-/// \tparam PointRange a random-access range of `Traits::Point_3`
+/// \tparam PointRange a model of `ConstRange` with random-access iterators; its value
+///         type is the key type of the point map
 /// \param points the input points
 /// \param is_outlier one flag per point (may be empty: no outliers)
 /// \param skeleton the skeleton whose `points` members are filled
+/// \param np optional named parameters:
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{point_map}
+///     \cgalParamDescription{a property map associating points to the elements of `points`}
+///     \cgalParamType{a model of `ReadablePropertyMap` whose value type is `Traits::Point_3`}
+///     \cgalParamDefault{`CGAL::Identity_property_map<Traits::Point_3>`}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
 /// \throws Invalid_input if `is_outlier` is neither empty nor of the size of `points`
-template <class ConcurrencyTag = CGAL::Parallel_if_available_tag, class PointRange, class Traits>
+template <class ConcurrencyTag = CGAL::Parallel_if_available_tag, class PointRange, class Traits,
+          class NamedParameters = parameters::Default_named_parameters>
 void assign_points_to_skeleton(const PointRange& points, const std::vector<bool>& is_outlier,
-                               Skeleton_graph<Traits>& skeleton)
+                               Skeleton_graph<Traits>& skeleton, const NamedParameters& np = parameters::default_values())
 {
+  const auto point_map = parameters::choose_parameter(parameters::get_parameter(np, internal_np::point_map),
+                                                      CGAL::Identity_property_map<typename Traits::Point_3>());
   typedef typename Traits::Point_3 Point_3;
   typedef CGAL::Search_traits_3<Traits> Base_traits;
   typedef std::vector<Point_3> Vertex_points;
@@ -74,7 +87,7 @@ void assign_points_to_skeleton(const PointRange& points, const std::vector<bool>
   internal::for_each_index<ConcurrencyTag>(n, [&](std::size_t i) {
     if(is_outlier.empty() || !is_outlier[i])
     {
-      Search search(tree, *(first + i), 1, 0, true, distance);
+      Search search(tree, get(point_map, *(first + i)), 1, 0, true, distance);
       nearest_vertex[i] = search.begin()->first;
     }
   }, 4096);

@@ -145,6 +145,8 @@ std::vector<Junction_zone> junction_zones(const Graph& g, const Lookup& lookup)
 ///
 /// \tparam ConcurrencyTag the iteration and the directionality run with TBB when it is
 ///         `CGAL::Parallel_tag`; results do not depend on the number of threads
+/// \tparam PointRange a model of `ConstRange`; its value type is the key type of the
+///         point map (named parameter `point_map`, default the identity on `Traits::Point_3`)
 /// \param points the points to contract towards (non-outlier input points and points
 ///        added by upsampling)
 /// \param field the distance field (its grid fixes the voxel size for every method)
@@ -173,21 +175,22 @@ class Sample_contraction
 public:
   /// Picks the samples and prepares the contraction; the parameters and exceptions are
   /// those of `contract_samples()`.
-  template <class NamedParameters = parameters::Default_named_parameters>
-  Sample_contraction(const std::vector<Point_3>& points, const Distance_field<Traits>& field,
+  template <class PointRange, class NamedParameters = parameters::Default_named_parameters>
+  Sample_contraction(const PointRange& points, const Distance_field<Traits>& field,
                      const Initial_skeleton<Traits>& initial, const NamedParameters& np = parameters::default_values())
       : lookup_(field)
   {
     using namespace internal;
     static constexpr const char* stage = "contract_samples";
-    const CGAL::Identity_property_map<Point_3> identity;
-    diagonal_ = internal::diagonal(checked_bbox(points, identity, stage));
+    const auto point_map = parameters::choose_parameter(parameters::get_parameter(np, internal_np::point_map),
+                                                        CGAL::Identity_property_map<Point_3>());
+    diagonal_ = internal::diagonal(checked_bbox(points, point_map, stage));
     result_.method = skeletonization_method(np);
     guided_ = result_.method == Skeletonization_method::DISTANCE_FIELD_GUIDED;
-    const std::vector<Vec3> input = to_xyz(points, identity);
-    const std::size_t m = number_of_samples(np, points.size(), stage);
+    const std::vector<Vec3> input = to_xyz(points, point_map);
+    const std::size_t m = number_of_samples(np, input.size(), stage);
     u_ = repulsion_coefficient(np, stage);
-    const double h0 = initial_support_radius(np, diagonal_, points.size(), stage);
+    const double h0 = initial_support_radius(np, diagonal_, input.size(), stage);
     growth_ = support_radius_growth(np, stage);
     const double sigma_threshold = branch_directionality(np, stage);
     max_iterations_ = iterations_per_stage(np, stage);
@@ -377,9 +380,9 @@ public:
   Sample_contraction& operator=(const Sample_contraction&) = delete;
 };
 
-template <class ConcurrencyTag = CGAL::Parallel_if_available_tag, class Traits,
+template <class ConcurrencyTag = CGAL::Parallel_if_available_tag, class PointRange, class Traits,
           class NamedParameters = parameters::Default_named_parameters>
-Contracted_samples<Traits> contract_samples(const std::vector<typename Traits::Point_3>& points,
+Contracted_samples<Traits> contract_samples(const PointRange& points,
                                             const Distance_field<Traits>& field,
                                             const Initial_skeleton<Traits>& initial,
                                             const NamedParameters& np = parameters::default_values())

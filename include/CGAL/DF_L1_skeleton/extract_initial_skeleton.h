@@ -26,6 +26,7 @@
 #include <CGAL/DF_L1_skeleton/skeleton_statistics.h>
 
 #include <CGAL/Named_function_parameters.h>
+#include <CGAL/tags.h>
 #include <CGAL/squared_distance_3.h>
 
 #include <algorithm>
@@ -140,6 +141,9 @@ namespace DF_L1 {
 ///   instead of 0.094, axis coverage 0.989 instead of 0.957; the other variants are not
 ///   smoothed and do not change.
 ///
+/// \tparam ConcurrencyTag `CGAL::Sequential_tag`, `CGAL::Parallel_tag` or
+///         `CGAL::Parallel_if_available_tag`: the thin-part search runs beside the ridge
+///         extraction on a second thread when parallel; the result is the same
 /// \tparam Traits a model of `Kernel`
 /// \param field the distance field returned by `compute_distance_field()`
 /// \param np an optional sequence of named parameters among:
@@ -177,7 +181,8 @@ namespace DF_L1 {
 ///          interior voxel two voxels deep and no thin object (a flat or linear point set, or one too
 ///          sparse to enclose a volume); the graph alone may hold curves when only thin objects have
 ///          them
-template <class Traits, class NamedParameters = parameters::Default_named_parameters>
+template <class ConcurrencyTag = CGAL::Parallel_if_available_tag, class Traits,
+          class NamedParameters = parameters::Default_named_parameters>
 Initial_skeleton<Traits> extract_initial_skeleton(const Distance_field<Traits>& field,
                                                   const NamedParameters& np = parameters::default_values())
 {
@@ -207,7 +212,7 @@ Initial_skeleton<Traits> extract_initial_skeleton(const Distance_field<Traits>& 
   std::vector<char> in, curves;
   internal::Thin_parts thin;
   bool has_interior = false;
-  internal::run_both<CGAL::Parallel_if_available_tag>(
+  internal::run_both<ConcurrencyTag>(
     [&] {
       has_interior = internal::ridge_voxels(field, values, c, result, in);
       if(has_interior)
