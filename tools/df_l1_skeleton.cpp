@@ -48,7 +48,7 @@ int stage_index(const std::string& stage)
 
 struct Settings
 {
-  std::string input, output, report, preview, stage = "final";
+  std::string input, output, report, preview, segmentation, stage = "final";
   bool preview_stages = false;
   int threads = 0; // 0: all cores
   long seed = 0;
@@ -72,6 +72,10 @@ std::vector<df_l1_tool::Option> option_table(Settings& s, bool& help, bool& vers
      [&](const std::string& v) { s.report = v; }},
     {"preview", "FILE.svg", "none", "write front, side and top views of the points and the skeleton",
      [&](const std::string& v) { s.preview = v; }},
+    {"segmentation", "FILE.ply", "none",
+     "with --stage initial or final: write every input point with the index of its skeleton vertex and of its branch "
+     "(-1 for outliers)",
+     [&](const std::string& v) { s.segmentation = v; }},
     {"preview-stages", "", "off", "with --stage final: add a row with the initial skeleton to the preview",
      [&](const std::string&) { s.preview_stages = true; }},
     {"threads", "N", "all cores", "number of threads",
@@ -243,6 +247,14 @@ int run(const Settings& s)
       DF::write_skeleton(s.output, *skeleton);
     else
       write_voxels(s.output, grid, field);
+    if(!s.segmentation.empty())
+    {
+      const DF::Point_segmentation segments = DF::segment_points(points, *skeleton);
+      DF::Ply_point_property vertex{"vertex", true, {}}, branch{"branch", true, {}};
+      vertex.values.assign(segments.vertex.begin(), segments.vertex.end());
+      branch.values.assign(segments.branch.begin(), segments.branch.end());
+      DF::write_point_ply(s.segmentation, points, {vertex, branch});
+    }
     if(!s.preview.empty())
     {
       std::vector<DF::Preview_panel<Kernel>> rows;
@@ -268,6 +280,7 @@ int run(const Settings& s)
   }
   if(!s.quiet)
     std::cerr << "df_l1_skeleton: wrote " << s.output << (s.preview.empty() ? "" : " and " + s.preview)
+              << (s.segmentation.empty() ? "" : " and " + s.segmentation)
               << (s.report.empty() ? "" : " and " + s.report) << "\n";
   return 0;
 }
@@ -307,6 +320,10 @@ int main(int argc, char** argv)
       throw Usage_error("--preview expects a .svg file");
     if(!settings.report.empty() && !has_suffix(settings.report, ".json"))
       throw Usage_error("--report expects a .json file");
+    if(!settings.segmentation.empty() && !has_suffix(settings.segmentation, ".ply"))
+      throw Usage_error("--segmentation expects a .ply file");
+    if(!settings.segmentation.empty() && voxel_stage)
+      throw Usage_error("--segmentation needs --stage initial or final (it labels the points by skeleton vertex and branch)");
     if(settings.preview_stages && settings.preview.empty())
       throw Usage_error("--preview-stages needs --preview FILE.svg");
     if(settings.preview_stages && settings.stage != "final")

@@ -27,6 +27,7 @@
 #include <CGAL/DF_L1_skeleton/flag_sparse_outliers.h>
 #include <CGAL/DF_L1_skeleton/named_parameters.h>
 #include <CGAL/DF_L1_skeleton/remove_outlier_voxels.h>
+#include <CGAL/DF_L1_skeleton/segment_points.h>
 #include <CGAL/DF_L1_skeleton/skeleton_statistics.h>
 #include <CGAL/DF_L1_skeleton/split_into_polylines.h>
 #include <CGAL/DF_L1_skeleton/upsample_sparse_regions.h>

@@ -660,3 +660,57 @@ TEST_CASE("tool: every library parameter has an option, and the earlier spelling
     CHECK_FALSE(fs::exists(scratch.path("bad.obj")));
   }
 }
+
+TEST_CASE("tool: --segmentation labels every input point with its vertex and branch", "[tool][segmentation]")
+{
+  const Scratch scratch;
+  const std::string input = shape_input(scratch, "y_junction", 3000);
+  const std::string segments = scratch.path("segments.ply"), skeleton = scratch.path("s.polylines.txt");
+  const Run r = run_tool(quoted(input) + " " + quoted(skeleton) + " --threads 1 --segmentation " + quoted(segments), scratch);
+  INFO(r.err);
+  REQUIRE(r.status == 0);
+  std::istringstream in(read_text(segments));
+  std::string line;
+  std::size_t declared = 0;
+  while(std::getline(in, line) && line != "end_header")
+    if(line.rfind("element vertex ", 0) == 0)
+      declared = std::stoul(line.substr(15));
+  CHECK(declared == 3000);
+  // one polyline per branch in the skeleton file; every branch label names one of them
+  std::size_t branches = 0;
+  {
+    std::istringstream polylines(read_text(skeleton));
+    while(std::getline(polylines, line))
+      branches += !line.empty();
+  }
+  REQUIRE(branches == 3); // a Y: three branches from the junction
+  std::vector<std::size_t> per_branch(branches, 0);
+  std::size_t rows = 0, labelled = 0;
+  double x, y, z;
+  long vertex, branch;
+  while(in >> x >> y >> z >> vertex >> branch)
+  {
+    ++rows;
+    CHECK((vertex < 0) == (branch < 0));
+    if(branch >= 0)
+    {
+      REQUIRE(std::size_t(branch) < branches);
+      ++per_branch[std::size_t(branch)];
+      ++labelled;
+    }
+  }
+  CHECK(rows == 3000);
+  CHECK(labelled > 2700); // a clean sample: few outliers
+  for(std::size_t b = 0; b < branches; ++b)
+    CHECK(per_branch[b] > 300); // each arm holds its share of the points
+  // only with a skeleton, and only to a PLY file
+  for(const std::string bad : {"--stage voxels --segmentation " + quoted(scratch.path("x.ply")),
+                               "--segmentation " + quoted(scratch.path("x.txt"))})
+  {
+    INFO(bad);
+    const Run b = run_tool(quoted(input) + " " + quoted(scratch.path(bad.find("voxels") != std::string::npos ? "v.ply" : "o.obj")) +
+                           " " + bad, scratch);
+    CHECK(b.status == 2);
+    CHECK(b.err.find("--segmentation") != std::string::npos);
+  }
+}
