@@ -101,8 +101,10 @@ struct Parameter_info
   const char* name;          ///< the field of `Parameters`, the named parameter and the getter
   const char* stage;         ///< the first stage function of `DF_L1_skeletonization` that reads it
   Parameter_kind kind;       ///< how the value is written
-  double lower, upper;       ///< range of INTEGER and REAL values
-  bool lower_open, upper_open; ///< whether the range excludes its bounds
+  double lower;              ///< lower bound of INTEGER and REAL values
+  double upper;              ///< upper bound of INTEGER and REAL values
+  bool lower_open;           ///< whether the range excludes its lower bound
+  bool upper_open;           ///< whether the range excludes its upper bound
   std::array<const char*, 3> choices; ///< CHOICE: the spelling of each enumerator, in order
   const char* default_text;  ///< the default, as the documentation states it
   const char* argument;      ///< the tool's name for the value (`V`, `K`...)
