@@ -264,35 +264,22 @@ public:
   /// has converged. `contracted_samples()` shows the samples after the stages run so far.
   bool contract()
   {
-    if(!contraction_)
-    {
-      extract_initial_skeleton();
-      contraction_ = std::make_unique<Sample_contraction>(
-        kept_and_added_points(), *field_, *initial_,
-        parameters::skeletonization_method(parameters_.skeletonization_method,
-        parameters::repulsion_coefficient(parameters_.repulsion_coefficient,
-        parameters::initial_support_radius(resolved_initial_support_radius(),
-        parameters::support_radius_growth(parameters_.support_radius_growth,
-        parameters::branch_directionality(parameters_.branch_directionality,
-        parameters::contraction_stages(parameters_.contraction_stages,
-        parameters::number_of_iterations(parameters_.number_of_iterations)
-          .number_of_samples(parameters_.number_of_samples))))))));
-    }
+    start_contraction();
     const bool ran = contraction_->contract();
     if(ran || !contracted_)
-    {
-      contracted_ = std::make_unique<Contracted_samples>(contraction_->result());
-      skeleton_.reset();
-    }
+      take_contracted_samples();
     return ran;
   }
 
   /// Runs the stages of the contraction until it converges (`contract_samples()`).
   void contract_until_convergence()
   {
-    while(contract())
-    {
-    }
+    start_contraction();
+    bool ran = false;
+    while(contraction_->contract()) // the samples are copied out once, at the end
+      ran = true;
+    if(ran || !contracted_)
+      take_contracted_samples();
   }
 
   /// Builds the final skeleton from the contracted samples (`build_skeleton_graph()`)
@@ -454,6 +441,31 @@ private:
       if(std::string(stage) == stages[i])
         return i;
     return 0;
+  }
+
+  // Picks the samples, once per contraction.
+  void start_contraction()
+  {
+    if(contraction_)
+      return;
+    extract_initial_skeleton();
+    contraction_ = std::make_unique<Sample_contraction>(
+      kept_and_added_points(), *field_, *initial_,
+      parameters::skeletonization_method(parameters_.skeletonization_method,
+      parameters::repulsion_coefficient(parameters_.repulsion_coefficient,
+      parameters::initial_support_radius(resolved_initial_support_radius(),
+      parameters::support_radius_growth(parameters_.support_radius_growth,
+      parameters::branch_directionality(parameters_.branch_directionality,
+      parameters::contraction_stages(parameters_.contraction_stages,
+      parameters::number_of_iterations(parameters_.number_of_iterations)
+        .number_of_samples(parameters_.number_of_samples))))))));
+  }
+
+  // The samples as the contraction left them; the skeleton built from older ones goes.
+  void take_contracted_samples()
+  {
+    contracted_ = std::make_unique<Contracted_samples>(contraction_->result());
+    skeleton_.reset();
   }
 
   // Changes a copy of the parameters and sets it.

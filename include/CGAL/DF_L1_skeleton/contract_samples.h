@@ -28,6 +28,7 @@
 #include <cmath>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -277,9 +278,24 @@ public:
 
   /// The samples as they are now (after the stages run so far), their branches and the
   /// record of every stage and iteration.
-  Contracted_samples<Traits> result() const
+  Contracted_samples<Traits> result() const&
   {
     Contracted_samples<Traits> r = result_;
+    complete(r);
+    return r;
+  }
+  /// the same, moving the record of the iterations out of a contraction that is done with
+  Contracted_samples<Traits> result() &&
+  {
+    Contracted_samples<Traits> r = std::move(result_);
+    complete(r);
+    return r;
+  }
+
+private:
+  // the current samples, their roles, radii and edges, added to the record `r`
+  void complete(Contracted_samples<Traits>& r) const
+  {
     for(const internal::Vec3& p : s_.x)
       r.points.emplace_back(p[0], p[1], p[2]);
     r.roles = s_.role;
@@ -288,10 +304,8 @@ public:
       for(std::size_t b : s_.adj[a])
         if(a < b)
           r.edges.emplace_back(a, b);
-    return r;
   }
 
-private:
   void record()
   {
     std::vector<Point_3> positions;
@@ -391,7 +405,7 @@ Contracted_samples<Traits> contract_samples(const PointRange& points,
   while(contraction.contract())
   {
   }
-  return contraction.result();
+  return std::move(contraction).result();
 }
 
 } // namespace DF_L1
