@@ -117,8 +117,10 @@ public:
       throw DF_L1::Invalid_input(std::string(stage_name) + ": all " + std::to_string(points_.size()) +
                                  " points coincide; there is no shape to skeletonize");
     diagonal_ = DF_L1::internal::diagonal(box);
+    longest_side_ = DF_L1::internal::longest_side(box);
+    thickness_ = rms_distance_to_best_plane(points_);
     parameters_ = DF_L1::internal::resolve_parameters(np, stage_name);
-    check_volume(DF_L1::internal::longest_side(box) / parameters_.voxel_resolution);
+    check_volume(parameters_.voxel_resolution);
   }
 
   /// \name Stages
@@ -160,8 +162,7 @@ public:
     // were checked by flag_outliers())
     const DF_L1::internal::Local_quadric_fitter<Traits> fitter(kept_points_);
     surface_noise_ = DF_L1::internal::surface_noise<ConcurrencyTag>(fitter);
-    const double finest_voxel = DF_L1::internal::longest_side(
-      CGAL::bbox_3(points_.begin(), points_.end())) / parameters_.voxel_resolution;
+    const double finest_voxel = longest_side_ / parameters_.voxel_resolution;
     const bool noisy = parameters_.denoising == DF_L1::Denoising::AUTOMATIC && surface_noise_ > 0.2 * finest_voxel;
     residual_growth_ = noisy ? DF_L1::internal::residual_growth<ConcurrencyTag>(fitter) : 0.0;
     denoised_ = parameters_.denoising == DF_L1::Denoising::ALWAYS || (noisy && residual_growth_ < 3);
@@ -359,8 +360,7 @@ public:
   void set_parameters(const DF_L1::Parameters& p)
   {
     DF_L1::check_parameters(p, stage_name);
-    if(p.voxel_resolution != parameters_.voxel_resolution)
-      check_volume(DF_L1::internal::longest_side(CGAL::bbox_3(points_.begin(), points_.end())) / p.voxel_resolution);
+    check_volume(p.voxel_resolution);
     int first = number_of_stages;
     for(const DF_L1::Parameter_info& info : DF_L1::parameter_table())
     {
@@ -385,14 +385,17 @@ public:
   double upsampling_radius() const
   {
     return parameters_.upsampling_radius ? *parameters_.upsampling_radius
-                                         : DF_L1::internal::upsampling_radius(parameters::default_values(), diagonal_,
-                                                                              points_.size(), stage_name);
+                                         : DF_L1::internal::default_upsampling_radius(diagonal_, points_.size());
   }
   void set_upsampling_radius(double r) { set([&](DF_L1::Parameters& p) { p.upsampling_radius = r; }); } ///< \sa `upsampling_radius()`
   int voxel_resolution() const { return parameters_.voxel_resolution; } ///< V
   void set_voxel_resolution(int V) { set([&](DF_L1::Parameters& p) { p.voxel_resolution = V; }); } ///< \sa `voxel_resolution()`
   /// s0, the size of the coarsest voxels before rounding (input units; default d_bb / 9)
-  double initial_voxel_size() const { return parameters_.initial_voxel_size ? *parameters_.initial_voxel_size : diagonal_ / 9; }
+  double initial_voxel_size() const
+  {
+    return parameters_.initial_voxel_size ? *parameters_.initial_voxel_size
+                                          : DF_L1::internal::default_initial_voxel_size(diagonal_);
+  }
   void set_initial_voxel_size(double s0) { set([&](DF_L1::Parameters& p) { p.initial_voxel_size = s0; }); } ///< \sa `initial_voxel_size()`
   int exterior_propagation_steps() const { return parameters_.exterior_propagation_steps; } ///< exterior steps per level
   /// \sa `exterior_propagation_steps()`
@@ -517,23 +520,29 @@ private:
       skeleton_.reset();
   }
 
-  // Points on a plane (or a line) enclose no volume, yet the voxels between their samples
-  // can look enclosed and give a meaningless skeleton: refuse them with a clear message.
-  void check_volume(double voxel_size) const
+  // The RMS distance of the points to their best-fitting plane (the smallest standard
+  // deviation of their covariance).
+  static double rms_distance_to_best_plane(const std::vector<Point>& points)
   {
     Eigen::Vector3d mean = Eigen::Vector3d::Zero();
-    for(const Point& p : points_)
+    for(const Point& p : points)
       mean += Eigen::Vector3d(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
-    mean /= double(points_.size());
+    mean /= double(points.size());
     Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
-    for(const Point& p : points_)
+    for(const Point& p : points)
     {
       const Eigen::Vector3d d = Eigen::Vector3d(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())) - mean;
       covariance += d * d.transpose();
     }
-    covariance /= double(points_.size());
-    const double thickness = std::sqrt((std::max)(0.0, Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(covariance).eigenvalues()(0)));
-    if(thickness < 0.25 * voxel_size)
+    covariance /= double(points.size());
+    return std::sqrt((std::max)(0.0, Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(covariance).eigenvalues()(0)));
+  }
+
+  // Points on a plane (or a line) enclose no volume, yet the voxels between their samples
+  // can look enclosed and give a meaningless skeleton: refuse them with a clear message.
+  void check_volume(int voxel_resolution) const
+  {
+    if(thickness_ < 0.25 * (longest_side_ / voxel_resolution))
       throw DF_L1::Invalid_input("no skeleton: the " + std::to_string(points_.size()) +
                                  " points lie on a plane (RMS distance to it under a quarter of a voxel); they enclose no volume");
   }
@@ -562,7 +571,8 @@ private:
   }
 
   std::vector<Point> points_;
-  double diagonal_ = 0;
+  double diagonal_ = 0, longest_side_ = 0; // of the points' bounding box
+  double thickness_ = 0;                   // rms_distance_to_best_plane() of the points
   DF_L1::Parameters parameters_;
 
   std::vector<bool> sparse_outliers_, outliers_;

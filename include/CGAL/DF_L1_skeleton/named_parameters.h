@@ -185,11 +185,14 @@ int voxel_resolution(const NamedParameters& np, const char* stage)
   return checked("voxel_resolution", parameter_or(np, internal_np::df_l1_voxel_resolution, Parameters().voxel_resolution), stage);
 }
 
-// s0, default d_bb / 9 (the paper).
+// s0 = d_bb / 9 (the paper).
+inline double default_initial_voxel_size(double diagonal) { return diagonal / 9; }
+
 template <class NamedParameters>
 double initial_voxel_size(const NamedParameters& np, double diagonal, const char* stage)
 {
-  return checked("initial_voxel_size", parameter_or(np, internal_np::df_l1_initial_voxel_size, diagonal / 9), stage);
+  return checked("initial_voxel_size",
+                 parameter_or(np, internal_np::df_l1_initial_voxel_size, default_initial_voxel_size(diagonal)), stage);
 }
 
 template <class NamedParameters>
@@ -206,12 +209,14 @@ int upsampling_neighbors(const NamedParameters& np, const char* stage)
                  stage);
 }
 
-// r of the density test, default 3 d_bb / cbrt(N) for N points.
+// r of the density test, 3 d_bb / cbrt(N) for N points.
+inline double default_upsampling_radius(double diagonal, std::size_t n) { return 3 * diagonal / std::cbrt(double(n)); }
+
 template <class NamedParameters>
 double upsampling_radius(const NamedParameters& np, double diagonal, std::size_t n, const char* stage)
 {
   return checked("upsampling_radius",
-                 parameter_or(np, internal_np::df_l1_upsampling_radius, 3 * diagonal / std::cbrt(double(n))), stage);
+                 parameter_or(np, internal_np::df_l1_upsampling_radius, default_upsampling_radius(diagonal, n)), stage);
 }
 
 // Default max(3, V/10), V the longest side of the grid in voxels.
