@@ -4,6 +4,7 @@
 #
 #   scripts/skeleton_digests.sh                 print one line per input: name, sha256 of
 #                                               the initial and of the final skeleton (.ply)
+#                                               and of the final one's .polylines.txt
 #   scripts/skeleton_digests.sh --check FILE    compare with a stored list (exit 1 on any
 #                                               difference, listing it)
 #   options: --build-dir DIR (default build; needs bin/df_l1_skeleton and bin/df_l1_generate),
@@ -64,13 +65,16 @@ list="$work/digests.tsv"
 for file in "${inputs[@]}"; do
   name="$(basename "$file")"
   digest() {
-    if "$tool" "$file" "$work/out.ply" --quiet --threads 2 "$@" 2>"$work/err"; then
-      sha256sum "$work/out.ply" | cut -c1-16
+    local out="$work/out.$1"
+    shift
+    if "$tool" "$file" "$out" --quiet --threads 2 "$@" 2>"$work/err"; then
+      sha256sum "$out" | cut -c1-16
     else
       echo "error:$(head -c 60 "$work/err" | tr '\t\n' '  ')"
     fi
   }
-  printf '%s\t%s\t%s\n' "$name" "$(digest --stage initial)" "$(digest)" >> "$list"
+  printf '%s\t%s\t%s\t%s\n' "$name" "$(digest ply --stage initial)" "$(digest ply)" \
+    "$(digest polylines.txt)" >> "$list"
 done
 
 if [ -n "$check" ]; then

@@ -299,6 +299,13 @@ TEST_CASE("split_into_polylines: invariants on random graphs", "[io][polylines]"
     const auto pls = split(g);
     check_split_invariants(g, pls);
     REQUIRE(split(g) == pls); // deterministic
+    // Canonical: the same graph with its edges stored in another order, some of
+    // them reversed, splits the same way.
+    std::shuffle(es.begin(), es.end(), rng);
+    for(auto& e : es)
+      if(rng() % 2 == 0)
+        std::swap(e.first, e.second);
+    REQUIRE(split(make_topology(n, es)) == pls);
   }
 }
 

@@ -7,6 +7,9 @@
 /// Splitting a skeleton graph into polylines: the maximal chains of degree-2
 /// vertices between junctions and end points.
 
+#include <CGAL/boost/graph/split_graph_into_polylines.h>
+
+#include <boost/graph/adjacency_list.hpp>
 #include <boost/graph/graph_traits.hpp>
 #include <boost/graph/properties.hpp>
 #include <boost/property_map/property_map.hpp>
@@ -23,67 +26,52 @@ namespace CGAL {
 namespace DF_L1 {
 namespace internal {
 
-/// The graph as compact adjacency lists of (neighbour index, edge id), so that
-/// parallel edges and self-loops are told apart and each edge is used once.
-/// A self-loop appears twice in the list of its vertex, as it counts 2 in the degree.
-struct Polyline_adjacency
+/// Collects the polylines that `CGAL::split_graph_into_polylines()` reports.
+struct Polyline_collector
 {
-  std::vector<std::vector<std::pair<std::size_t, std::size_t>>> adj;
-  std::size_t num_edges = 0;
-
-  template <class Graph>
-  explicit Polyline_adjacency(const Graph& g)
-  {
-    const auto index = get(boost::vertex_index, g);
-    adj.resize(num_vertices(g));
-    for(auto e : boost::make_iterator_range(edges(g))) {
-      const std::size_t s = static_cast<std::size_t>(get(index, source(e, g)));
-      const std::size_t t = static_cast<std::size_t>(get(index, target(e, g)));
-      adj[s].emplace_back(t, num_edges);
-      adj[t].emplace_back(s, num_edges);
-      ++num_edges;
-    }
-    // Deterministic walks whatever the storage order of the edges.
-    for(auto& a : adj)
-      std::sort(a.begin(), a.end());
-  }
-
-  std::size_t degree(std::size_t v) const { return adj[v].size(); }
+  std::vector<std::vector<std::size_t>> chains;
+  void start_new_polyline() { chains.emplace_back(); }
+  void add_node(std::size_t v) { chains.back().push_back(v); }
+  void end_polyline() {}
 };
 
-/// Walks from `start` along the unused edge in slot `slot` and goes on through
-/// degree-2 vertices until it reaches a vertex of another degree or `start`
-/// again. Marks the edges it uses; returns the vertex indices of the chain.
-inline std::vector<std::size_t> walk_chain(const Polyline_adjacency& a,
-                                           std::vector<bool>& used,
-                                           std::size_t start, std::size_t slot)
+/// Puts a chain in the canonical form that `split_into_polylines()` documents.
+/// `real` is the number of vertices of the input graph; indices from `real` on
+/// are the vertices added to subdivide self-loops and parallel edges.
+inline std::vector<std::size_t> canonical_chain(std::vector<std::size_t> chain,
+                                                std::size_t real,
+                                                const std::vector<std::size_t>& degree)
 {
-  std::vector<std::size_t> chain{start};
-  std::size_t cur = start;
-  std::size_t next = a.adj[start][slot].first;
-  std::size_t edge = a.adj[start][slot].second;
-  for(;;) {
-    used[edge] = true;
-    chain.push_back(next);
-    if(next == start || a.degree(next) != 2)
-      break;
-    cur = next;
-    // The other edge of a degree-2 vertex; it is unused: had it been walked,
-    // the walk would have gone on through `cur` along the edge we came by.
-    const auto& nb = a.adj[cur];
-    const std::size_t k = (nb[0].second == edge) ? 1 : 0;
-    if(used[nb[k].second])
-      break; // cannot happen on a consistent graph; guards against an endless loop
-    next = nb[k].first;
-    edge = nb[k].second;
+  const bool closed = chain.size() > 1 && chain.front() == chain.back();
+  if(closed)
+    chain.pop_back();
+  chain.erase(std::remove_if(chain.begin(), chain.end(),
+                             [real](std::size_t v) { return v >= real; }),
+              chain.end());
+  if(!closed) {
+    if(chain.back() < chain.front())
+      std::reverse(chain.begin(), chain.end());
+    return chain;
   }
+  // A closed chain starts at its one vertex of degree other than 2 when it has
+  // one (a loop leaving a junction), else at its smallest vertex, and goes on
+  // towards the smaller of that vertex's two neighbours along the chain.
+  auto start = std::find_if(chain.begin(), chain.end(),
+                            [&](std::size_t v) { return degree[v] != 2; });
+  if(start == chain.end())
+    start = std::min_element(chain.begin(), chain.end());
+  std::rotate(chain.begin(), start, chain.end());
+  if(chain.size() > 2 && chain.back() < chain[1])
+    std::reverse(chain.begin() + 1, chain.end());
+  chain.push_back(chain.front());
   return chain;
 }
 
 } // namespace internal
 
 /// \ingroup PkgDFL1SkeletonRef
-/// Splits a graph into polylines.
+/// Splits a graph into polylines with `CGAL::split_graph_into_polylines()`, in a
+/// canonical order that does not depend on how the graph stores its edges.
 ///
 /// Each polyline is a maximal chain of edges whose inner vertices have degree 2:
 /// - a chain between two vertices of degree other than 2 (end points and
@@ -97,8 +85,9 @@ inline std::vector<std::size_t> walk_chain(const Polyline_adjacency& a,
 ///
 /// Every edge is in exactly one polyline. Polylines are output ordered by the
 /// index of their first vertex, and the chains leaving one vertex in the order
-/// of the index of their second vertex. A self-loop counts 2 in the degree of
-/// its vertex.
+/// of the index of their second vertex. Unlike `CGAL::split_graph_into_polylines()`
+/// alone, self-loops and parallel edges are kept: a self-loop counts 2 in the
+/// degree of its vertex and is a closed polyline of its own.
 ///
 /// \tparam Graph a model of `VertexListGraph` and `EdgeListGraph` with an
 ///         internal `vertex_index` property map (such as `Skeleton_graph`)
@@ -111,37 +100,54 @@ template <class Graph, class OutputIterator>
 OutputIterator split_into_polylines(const Graph& g, OutputIterator out)
 {
   using vertex_descriptor = typename boost::graph_traits<Graph>::vertex_descriptor;
+  using Simple_graph = boost::adjacency_list<boost::vecS, boost::vecS, boost::undirectedS>;
 
-  const internal::Polyline_adjacency a(g);
-  const std::size_t n = a.adj.size();
-  std::vector<bool> used(a.num_edges, false);
-  std::vector<std::vector<std::size_t>> chains;
-
-  // Chains from end points and junctions, then what is left: pure cycles.
-  for(std::size_t v = 0; v < n; ++v) {
-    if(a.degree(v) == 0) {
-      chains.push_back({v});
-    } else if(a.degree(v) != 2) {
-      for(std::size_t k = 0; k < a.adj[v].size(); ++k)
-        if(!used[a.adj[v][k].second])
-          chains.push_back(internal::walk_chain(a, used, v, k));
-    }
-  }
-  for(std::size_t v = 0; v < n; ++v) {
-    if(a.degree(v) == 2 && !used[a.adj[v][0].second])
-      chains.push_back(internal::walk_chain(a, used, v, 0));
-  }
-
-  // Within the first loop chains come out ordered by first vertex already; the
-  // stable sort interleaves the cycles and keeps the order of ties.
-  std::stable_sort(chains.begin(), chains.end(),
-                   [](const auto& c1, const auto& c2) { return c1.front() < c2.front(); });
-
-  // Map indices back to descriptors (they coincide for `vecS` vertex storage).
-  std::vector<vertex_descriptor> by_index(n);
+  // A simple graph on the vertex indices, with the same degrees: a self-loop
+  // becomes a triangle through two added vertices and a parallel edge a path
+  // through one, since split_graph_into_polylines() ignores both.
   const auto index = get(boost::vertex_index, g);
+  const std::size_t n = num_vertices(g);
+  std::vector<vertex_descriptor> by_index(n);
   for(auto v : boost::make_iterator_range(vertices(g)))
     by_index[static_cast<std::size_t>(get(index, v))] = v;
+
+  std::vector<std::pair<std::size_t, std::size_t>> edge_list;
+  for(auto e : boost::make_iterator_range(edges(g))) {
+    const std::size_t s = static_cast<std::size_t>(get(index, source(e, g)));
+    const std::size_t t = static_cast<std::size_t>(get(index, target(e, g)));
+    edge_list.emplace_back(std::min(s, t), std::max(s, t));
+  }
+  std::sort(edge_list.begin(), edge_list.end());
+
+  Simple_graph simple(n);
+  std::vector<std::size_t> degree(n, 0);
+  for(std::size_t i = 0; i < edge_list.size(); ++i) {
+    const auto [s, t] = edge_list[i];
+    ++degree[s];
+    ++degree[t];
+    if(s == t) {
+      const auto a = boost::add_vertex(simple);
+      const auto b = boost::add_vertex(simple);
+      boost::add_edge(s, a, simple);
+      boost::add_edge(a, b, simple);
+      boost::add_edge(b, t, simple);
+    } else if(i > 0 && edge_list[i - 1] == edge_list[i]) {
+      const auto m = boost::add_vertex(simple);
+      boost::add_edge(s, m, simple);
+      boost::add_edge(m, t, simple);
+    } else {
+      boost::add_edge(s, t, simple);
+    }
+  }
+
+  internal::Polyline_collector collector;
+  CGAL::split_graph_into_polylines(simple, collector);
+
+  std::vector<std::vector<std::size_t>> chains;
+  chains.reserve(collector.chains.size());
+  for(auto& c : collector.chains)
+    chains.push_back(internal::canonical_chain(std::move(c), n, degree));
+  std::sort(chains.begin(), chains.end());
 
   for(const auto& c : chains) {
     std::vector<vertex_descriptor> polyline;
