@@ -6,6 +6,8 @@
 #include <CGAL/DF_L1_skeleton/Skeleton_graph.h>
 #include <CGAL/DF_L1_skeleton/internal/uniform_grid.h>
 
+#include <CGAL/number_utils.h>
+
 #include <algorithm>
 #include <array>
 #include <cmath>

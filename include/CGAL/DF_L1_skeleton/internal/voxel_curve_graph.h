@@ -4,11 +4,11 @@
 #define CGAL_DF_L1_SKELETON_INTERNAL_VOXEL_CURVE_GRAPH_H
 
 #include <CGAL/DF_L1_skeleton/Skeleton_graph.h>
-#include <CGAL/DF_L1_skeleton/skeleton_statistics.h>
 
 #include <CGAL/Iterator_range.h>
 
 #include <boost/graph/adjacency_list.hpp>
+#include <boost/graph/connected_components.hpp>
 
 #include <algorithm>
 #include <array>
@@ -127,10 +127,16 @@ template <class Traits, class Geometry>
 Skeleton_graph<Traits> voxel_curve_graph(const Geometry& grid, const std::vector<std::size_t>& voxels, long cavities = 0)
 {
   Skeleton_graph<Traits> g = adjacency_graph<Traits>(grid, voxels);
-  Skeleton_statistics counts = skeleton_statistics(g);
-  const long loops = (std::max)(0L, first_betti_number(grid, voxels, long(counts.components), cavities));
+  long components = 0;
+  if(boost::num_vertices(g) > 0)
+  {
+    std::vector<int> component(boost::num_vertices(g));
+    components = long(boost::connected_components(g, component.data()));
+  }
+  const long cycles = long(boost::num_edges(g)) + components - long(boost::num_vertices(g));
+  const long loops = (std::max)(0L, first_betti_number(grid, voxels, components, cavities));
   const int max_hops = 16;
-  for(long extra = long(counts.cycles) - loops; extra > 0; --extra)
+  for(long extra = cycles - loops; extra > 0; --extra)
   {
     // The edge with the shortest detour (ties: the longest edge, then the first).
     std::size_t best_s = 0, best_t = 0;
