@@ -76,7 +76,7 @@ std::vector<df_l1_tool::Option> option_table(Settings& s, bool& help, bool& vers
      "with --stage initial or final: write every input point with the index of its skeleton vertex and of its branch "
      "(-1 for outliers)",
      [&](const std::string& v) { s.segmentation = v; }},
-    {"preview-stages", "", "off", "with --stage final: add a row with the initial skeleton to the preview",
+    {"preview-stages", "", "off", "with --stage final: add rows with the contracted samples, the initial skeleton, the distance field and the voxels to the preview",
      [&](const std::string&) { s.preview_stages = true; }},
     {"threads", "N", "all cores", "number of threads",
      [&](const std::string& v) { s.threads = int(parse_integer("threads", v, 1, 1024)); }},
@@ -258,10 +258,35 @@ int run(const Settings& s)
     if(!s.preview.empty())
     {
       std::vector<DF::Preview_panel<Kernel>> rows;
+      std::vector<Point_3> kept_samples;
       if(final_skeleton)
         rows.push_back({"final skeleton (" + DF::parameter_text(s.parameters, "skeletonization_method") + ")", final_skeleton});
+      if(contracted && s.preview_stages)
+      {
+        for(std::size_t i = 0; i < contracted->points.size(); ++i)
+          if(contracted->roles[i] != DF::Sample_role::REMOVED)
+            kept_samples.push_back(contracted->points[i]);
+        DF::Preview_panel<Kernel> panel;
+        panel.title = "contracted samples";
+        panel.stage_points = &kept_samples;
+        rows.push_back(panel);
+      }
       if(initial && (!final_skeleton || s.preview_stages))
         rows.push_back({"initial skeleton", &initial->graph});
+      if(field && (!initial || s.preview_stages))
+      {
+        DF::Preview_panel<Kernel> panel;
+        panel.title = "distance field";
+        panel.distance_field = field;
+        rows.push_back(panel);
+      }
+      if(!field || s.preview_stages)
+      {
+        DF::Preview_panel<Kernel> panel;
+        panel.title = "voxels";
+        panel.voxels = &grid;
+        rows.push_back(panel);
+      }
       DF::Preview_options options;
       options.title = s.input;
       if(rows.empty())
@@ -327,7 +352,7 @@ int main(int argc, char** argv)
     if(settings.preview_stages && settings.preview.empty())
       throw Usage_error("--preview-stages needs --preview FILE.svg");
     if(settings.preview_stages && settings.stage != "final")
-      throw Usage_error("--preview-stages needs --stage final (it adds the initial skeleton under the final one)");
+      throw Usage_error("--preview-stages needs --stage final (it adds the earlier stages under the final skeleton)");
   }
   catch(const Usage_error& e)
   {

@@ -521,25 +521,41 @@ TEST_CASE("tool: bad values of the contraction options give exit status 2 and a 
   }
 }
 
-TEST_CASE("tool: --preview-stages adds the initial skeleton as a second row", "[tool][final]")
+TEST_CASE("tool: --preview-stages adds a row per earlier stage; voxel stages draw slices", "[tool][final]")
 {
   const Scratch scratch;
   const std::string input = shape_input(scratch, "y_junction", 3000);
   const std::string output = scratch.path("out.obj");
   const auto preview = [&](const std::string& name, const std::string& arguments) {
     const std::string svg = scratch.path(name);
-    const Run r = run_tool(quoted(input) + " " + quoted(output) + " --samples 400 --threads 1 --preview " + quoted(svg) +
+    const std::string out = arguments.find("--stage voxels") != std::string::npos ||
+                                    arguments.find("--stage distance") != std::string::npos
+                              ? scratch.path("voxels.ply")
+                              : output;
+    const Run r = run_tool(quoted(input) + " " + quoted(out) + " --samples 400 --threads 1 --preview " + quoted(svg) +
                            " " + arguments, scratch);
     INFO(r.err);
     REQUIRE(r.status == 0);
     return read_text(svg);
   };
-  const std::string both = preview("both.svg", "--preview-stages");
-  CHECK(count_of(both, "class=\"row-title\"") == 2);
-  const std::size_t final_title = both.find(">final skeleton"), initial_title = both.find(">initial skeleton");
-  CHECK(final_title != std::string::npos);
-  CHECK(initial_title != std::string::npos);
-  CHECK(final_title < initial_title); // the result first
+  // The rows in this order, the result first.
+  const std::vector<std::string> titles{">final skeleton", ">contracted samples", ">initial skeleton",
+                                        ">distance field", ">voxels"};
+  const std::string all = preview("all.svg", "--preview-stages");
+  CHECK(count_of(all, "class=\"row-title\"") == 5);
+  std::size_t previous = 0;
+  for(const std::string& title : titles)
+  {
+    INFO(title);
+    const std::size_t at = all.find(title);
+    REQUIRE(at != std::string::npos);
+    CHECK(at > previous);
+    previous = at;
+  }
+  // Slices of both voxel rows; the distance field is shaded, the voxels are not.
+  CHECK(count_of(all, "slice") >= 6);
+  CHECK(all.find("#bd0026") != std::string::npos); // the deepest shade
+  CHECK(all.find("#6baed6") != std::string::npos); // interior voxels
 
   const std::string final_only = preview("final.svg", "");
   CHECK(count_of(final_only, "class=\"row-title\"") == 1);
@@ -550,6 +566,18 @@ TEST_CASE("tool: --preview-stages adds the initial skeleton as a second row", "[
   CHECK(count_of(initial_only, "class=\"row-title\"") == 1);
   CHECK(initial_only.find(">initial skeleton") != std::string::npos);
   CHECK(initial_only.find(">final skeleton") == std::string::npos);
+
+  const std::string distance = preview("distance.svg", "--stage distance");
+  CHECK(count_of(distance, "class=\"row-title\"") == 1);
+  CHECK(distance.find(">distance field") != std::string::npos);
+  CHECK(distance.find("#bd0026") != std::string::npos);
+
+  const std::string voxels = preview("voxels.svg", "--stage voxels");
+  CHECK(count_of(voxels, "class=\"row-title\"") == 1);
+  CHECK(voxels.find(">voxels") != std::string::npos);
+  CHECK(voxels.find("#6baed6") != std::string::npos);
+  CHECK(voxels.find("#6e6e6e") != std::string::npos); // boundary voxels
+  CHECK(voxels.find("#bd0026") == std::string::npos);
 }
 
 TEST_CASE("tool: --stage initial still writes the initial skeleton in the same formats", "[tool][final]")

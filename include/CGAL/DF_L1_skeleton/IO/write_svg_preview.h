@@ -7,7 +7,9 @@
 /// A quick-look picture of a point cloud and its skeleton(s): a self-contained
 /// SVG file with three orthographic views per row, viewable in any browser.
 
+#include <CGAL/DF_L1_skeleton/Distance_field.h>
 #include <CGAL/DF_L1_skeleton/Skeleton_graph.h>
+#include <CGAL/DF_L1_skeleton/Voxel_grid.h>
 #include <CGAL/DF_L1_skeleton/errors.h>
 #include <CGAL/DF_L1_skeleton/IO/write_file_atomically.h>
 
@@ -48,20 +50,67 @@ struct Preview_options
 };
 
 /// \ingroup PkgDFL1SkeletonRef
-/// One row of `write_svg_preview()`: a title and the skeleton drawn over the points.
+/// One row of `write_svg_preview()`: a title and what is drawn over the points, in this
+/// order: a slice of voxels, points of a stage (such as the contracted samples), the
+/// skeleton.
 /// \tparam Traits a model of `Kernel`
 template <class Traits>
 struct Preview_panel
 {
   /// text shown above the row, followed by the vertex and edge counts
   std::string title;
-  /// the skeleton to draw; `nullptr` draws the points only
+  /// the skeleton to draw; `nullptr` draws none
   const Skeleton_graph<Traits>* skeleton = nullptr;
+  /// a voxel grid to draw: in each view, the slice across the view direction that holds
+  /// the most interior voxels, boundary voxels grey, interior voxels blue, outlier
+  /// voxels red; `nullptr` draws none
+  const Voxel_grid<Traits>* voxels = nullptr;
+  /// a distance field to draw as `voxels` does, the interior voxels shaded from light
+  /// (shallow) to dark red (deepest); drawn instead of `voxels` when both are given
+  const Distance_field<Traits>* distance_field = nullptr;
+  /// points to draw as small dark blue dots (such as the contracted samples); `nullptr`
+  /// draws none
+  const std::vector<typename Traits::Point_3>* stage_points = nullptr;
 };
 
 namespace internal {
 
 using Svg_point = std::array<double, 3>;
+
+/// One orthographic view: which coordinates go right and up, and which one
+/// grows towards the viewer (for the painter's order of the points).
+struct Svg_view
+{
+  const char* label;
+  int right, up, depth;
+  bool depth_towards_viewer;
+};
+
+// Right-handed: in the front view the viewer looks along +y, in the side view
+// along -x, in the top view along -z.
+inline const std::array<Svg_view, 3>& svg_views()
+{
+  static const std::array<Svg_view, 3> views{{{"front (x right, z up)", 0, 2, 1, false},
+                                               {"side (y right, z up)", 1, 2, 0, true},
+                                               {"top (x right, y up)", 0, 1, 2, true}}};
+  return views;
+}
+
+/// A square of a voxel slice, by its lower corner in the coordinates that go right
+/// and up in its view, and the index of its colour in `svg_cell_colours()`.
+struct Svg_cell
+{
+  double right, up;
+  std::size_t colour;
+};
+
+/// Boundary, interior, outlier, then the shades of depth from shallow to deep.
+inline const std::array<const char*, 9>& svg_cell_colours()
+{
+  static const std::array<const char*, 9> colours{{"#6e6e6e", "#6baed6", "#d62728", "#ffffb2", "#fed976",
+                                                    "#feb24c", "#fd8d3c", "#f03b20", "#bd0026"}};
+  return colours;
+}
 
 /// A row reduced to plain arrays, so that the drawing code is not a template.
 struct Svg_row
@@ -71,6 +120,10 @@ struct Svg_row
   std::vector<Svg_point> vertices;
   std::vector<std::size_t> degrees;
   std::vector<std::pair<std::size_t, std::size_t>> edges;
+  std::vector<Svg_point> stage_points;
+  double cell_size = 0;
+  std::array<std::vector<Svg_cell>, 3> cells; // per view
+  std::string slice_note;                    // where the slices are, for the title
 };
 
 /// Appends `x` rounded to one decimal, locale-independently: pixel coordinates
@@ -117,11 +170,54 @@ Svg_point svg_point(const std::string& path, const Point& p, const char* what, s
   return q;
 }
 
+/// Fills `row.cells`: per view, the slice across its depth axis with the most interior
+/// voxels. `values` (may be null) shades the interior voxels by depth.
+template <class Traits>
+void svg_slices(Svg_row& row, const Grid_geometry<Traits>& grid, const std::vector<Voxel_label>& labels,
+                const std::vector<float>* values)
+{
+  const auto& views = svg_views();
+  float deepest = 0;
+  if(values)
+    for(float x : *values)
+      deepest = (std::max)(deepest, x);
+  row.cell_size = CGAL::to_double(grid.voxel_size);
+  const double origin[3] = {CGAL::to_double(grid.origin.x()), CGAL::to_double(grid.origin.y()),
+                            CGAL::to_double(grid.origin.z())};
+  const char* axis_names = "xyz";
+  for(int k = 0; k < 3; ++k) {
+    const int d = views[k].depth;
+    std::vector<std::size_t> interior(std::size_t(grid.dims[d]), 0);
+    for(std::size_t v = 0; v < labels.size(); ++v)
+      if(labels[v] == Voxel_label::INTERIOR)
+        ++interior[std::size_t(grid.coordinates(v)[d])];
+    const int slice = int(std::max_element(interior.begin(), interior.end()) - interior.begin());
+    for(std::size_t v = 0; v < labels.size(); ++v) {
+      const std::array<int, 3> c = grid.coordinates(v);
+      if(c[d] != slice || labels[v] == Voxel_label::EXTERIOR)
+        continue;
+      std::size_t colour = std::size_t(labels[v]) - 1; // boundary, interior, outlier
+      if(values && labels[v] == Voxel_label::INTERIOR && deepest > 0)
+        colour = 3 + (std::min)(std::size_t(5), std::size_t(6 * (*values)[v] / deepest));
+      row.cells[std::size_t(k)].push_back({origin[views[k].right] + c[views[k].right] * row.cell_size,
+                                           origin[views[k].up] + c[views[k].up] * row.cell_size, colour});
+    }
+    row.slice_note += (k ? ", " : "") + std::string(1, axis_names[d]) + " slice " + std::to_string(slice);
+  }
+}
+
 template <class Traits>
 Svg_row svg_row(const std::string& path, const Preview_panel<Traits>& panel)
 {
   Svg_row row;
   row.title = panel.title;
+  if(panel.distance_field)
+    svg_slices(row, *panel.distance_field, panel.distance_field->labels, &panel.distance_field->values);
+  else if(panel.voxels)
+    svg_slices(row, *panel.voxels, panel.voxels->labels, nullptr);
+  if(panel.stage_points)
+    for(std::size_t i = 0; i < panel.stage_points->size(); ++i)
+      row.stage_points.push_back(svg_point(path, (*panel.stage_points)[i], "point", i));
   if(panel.skeleton == nullptr)
     return row;
   const Skeleton_graph<Traits>& g = *panel.skeleton;
@@ -134,25 +230,6 @@ Svg_row svg_row(const std::string& path, const Preview_panel<Traits>& panel)
     row.edges.emplace_back(static_cast<std::size_t>(source(e, g)),
                            static_cast<std::size_t>(target(e, g)));
   return row;
-}
-
-/// One orthographic view: which coordinates go right and up, and which one
-/// grows towards the viewer (for the painter's order of the points).
-struct Svg_view
-{
-  const char* label;
-  int right, up, depth;
-  bool depth_towards_viewer;
-};
-
-// Right-handed: in the front view the viewer looks along +y, in the side view
-// along -x, in the top view along -z.
-inline const std::array<Svg_view, 3>& svg_views()
-{
-  static const std::array<Svg_view, 3> views{{{"front (x right, z up)", 0, 2, 1, false},
-                                               {"side (y right, z up)", 1, 2, 0, true},
-                                               {"top (x right, y up)", 0, 1, 2, true}}};
-  return views;
 }
 
 inline void write_svg(std::ostream& os, const std::vector<Svg_point>& all_points,
@@ -179,8 +256,10 @@ inline void write_svg(std::ostream& os, const std::vector<Svg_point>& all_points
     }
   };
   for(const Svg_point& p : all_points) extend(p);
-  for(const Svg_row& r : rows)
+  for(const Svg_row& r : rows) {
     for(const Svg_point& p : r.vertices) extend(p);
+    for(const Svg_point& p : r.stage_points) extend(p);
+  }
   if(lo[0] > hi[0]) { // nothing at all
     lo = {{0., 0., 0.}};
     hi = {{1., 1., 1.}};
@@ -249,6 +328,10 @@ inline void write_svg(std::ostream& os, const std::vector<Svg_point>& all_points
     if(row && row->has_skeleton)
       title += " \xE2\x80\x94 " + std::to_string(row->vertices.size()) + " vertices, " +
                std::to_string(row->edges.size()) + " edges";
+    if(row && !row->slice_note.empty())
+      title += " \xE2\x80\x94 " + row->slice_note;
+    if(row && !row->stage_points.empty())
+      title += " \xE2\x80\x94 " + std::to_string(row->stage_points.size()) + " points";
     title += " (" + std::to_string(pts.size()) + " of " + std::to_string(n) + " points shown)";
     s += "<text class=\"row-title\" x=\"";
     num(margin);
@@ -313,6 +396,53 @@ inline void write_svg(std::ostream& os, const std::vector<Svg_point>& all_points
           }
           s += "\"/>\n";
         }
+      }
+
+      // Voxel slice: one path per colour of squares, over the points.
+      if(row && !row->cells[std::size_t(k)].empty()) {
+        const double side = row->cell_size * scale;
+        const auto& colours = svg_cell_colours();
+        for(std::size_t colour = 0; colour < colours.size(); ++colour) {
+          bool open = false;
+          for(const Svg_cell& cell : row->cells[std::size_t(k)]) {
+            if(cell.colour != colour)
+              continue;
+            if(!open) {
+              s += "<path fill=\"";
+              s += colours[colour];
+              s += "\" fill-opacity=\"0.85\" d=\"";
+              open = true;
+            }
+            Svg_point corner{{0., 0., 0.}};
+            corner[v.right] = cell.right;
+            corner[v.up] = cell.up;
+            s += 'M';
+            num(px(corner));
+            s += ' ';
+            num(py(corner) - side);
+            s += 'h';
+            num(side);
+            s += 'v';
+            num(side);
+            s += 'h';
+            num(-side);
+            s += 'z';
+          }
+          if(open)
+            s += "\"/>\n";
+        }
+      }
+
+      if(row && !row->stage_points.empty()) {
+        s += "<path fill=\"none\" stroke=\"#08306b\" stroke-width=\"2\" stroke-linecap=\"round\" d=\"";
+        for(const Svg_point& p : row->stage_points) {
+          s += 'M';
+          num(px(p));
+          s += ' ';
+          num(py(p));
+          s += "h0";
+        }
+        s += "\"/>\n";
       }
 
       if(row && row->has_skeleton) {
