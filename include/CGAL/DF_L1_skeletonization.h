@@ -88,17 +88,10 @@ public:
   ///
   /// \tparam PointRange a model of `ConstRange`; its value type is the key type of the point map
   /// \param points the input points; normals are not needed
-  /// \param np an optional sequence of named parameters among `point_map` and the
-  ///        parameters of the stages: `denoising`, `denoising_neighbors`,
-  ///        `voxel_resolution`, `initial_voxel_size`,
-  ///        `exterior_propagation_steps`, `upsampling`, `upsampling_neighbors`,
-  ///        `upsampling_radius`, `outlier_component_size`, `thinning_coefficient`,
-  ///        `spur_length_ratio`, `skeletonization_method`, `number_of_samples`,
-  ///        `repulsion_coefficient`, `initial_support_radius`, `support_radius_growth`,
-  ///        `branch_directionality`, `number_of_iterations`, `contraction_stages` (see `voxelize_point_set()`,
-  ///        `denoise_point_set()`, `upsample_sparse_regions()`, `remove_outlier_voxels()`,
-  ///        `extract_initial_skeleton()` and `contract_samples()` for their meaning and
-  ///        defaults); the initial skeleton's `thin_parts`, `occupied_depth` and
+  /// \param np an optional sequence of named parameters: `point_map` (as for
+  ///        `voxelize_point_set()`) and every parameter of `DF_L1::Parameters`, whose
+  ///        type, range, default and meaning \ref parameters lists (the stage functions
+  ///        document them too). The initial skeleton's `thin_parts`, `occupied_depth` and
   ///        `surface_noise` are set by the class: `thin_parts` on exactly when the cloud
   ///        was not smoothed (`denoised()`), `occupied_depth` on exactly when it was,
   ///        `surface_noise` to `surface_noise()`

@@ -209,7 +209,7 @@ inline const std::vector<Parameter_info>& parameter_table()
      [](Parameters& p, double x) { p.initial_voxel_size = x; },
      [](const Parameters& p) { return p.initial_voxel_size.has_value(); }},
     {"exterior_propagation_steps", "voxelize", K::INTEGER, 1, 27, false, false, {}, "1", "N",
-     "26-neighbour steps of the exterior through the empty sub-voxels per refinement level", {},
+     "face-neighbour steps of the exterior through the empty sub-voxels per refinement level", {},
      [](const Parameters& p) { return double(p.exterior_propagation_steps); },
      [](Parameters& p, double x) { p.exterior_propagation_steps = int(x); }},
     {"outlier_component_size", "remove_outlier_voxels", K::INTEGER, 0, 1 << 20, false, false, {}, "max(3, V/10)", "N",

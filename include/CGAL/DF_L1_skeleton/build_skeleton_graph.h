@@ -117,25 +117,17 @@ void merge_close_junctions(Curve_graph& g, const Field_lookup<Traits>& field)
 /// Builds the skeleton graph from the contracted samples.
 ///
 /// With the distance-field guidance (the method of `samples`), the graph is the initial
-/// skeleton's: its connectivity, with each vertex re-centred on the contracted samples
-/// around it (moved across the curve to their theta-weighted mean within the local
-/// radius, when the move stays inside and keeps the depth). Hair is removed: a terminal
-/// branch shorter than 1.5 local radii r_j at its junction, or shorter than r_j plus
-/// the diameter at its tip (a bump whose end ball barely clears the junction's ball);
-/// junctions closer than a local radius are merged. This departs from the paper, which builds the graph from the
-/// traced branches and bridge points: on our synthetic suite (12 shapes x 6 variants) the
-/// traced branches, even reconciled with the initial skeleton, gave the designed topology
-/// in 42 of 72 cases and the initial skeleton's connectivity in 64. The thinning does not
-/// stop short of the ends, does not double up branches and knows the shape's components
-/// and handles; the contraction is what centres the skeleton and smooths the voxel
-/// staircase. The traced branches stay available in `samples.edges`.
-///
-/// With the plain L1-medial method, the graph is the traced branches and bridges.
-///
-/// For both methods: the curves are smoothed (3 passes) and resampled every 2 voxels;
-/// each vertex gets the distance value at its position as its radius (at least half a
-/// voxel: a part thinner than the voxels has no interior voxel). The `points`
-/// lists stay empty: fill them with `assign_points_to_skeleton()`.
+/// skeleton's connectivity with each vertex re-centred on the contracted samples around
+/// it (moved to their theta-weighted mean within the local radius when the move stays
+/// inside and keeps the depth); hair is pruned and junctions closer than a local radius
+/// are merged. The paper builds the graph from the traced branches and bridge points
+/// instead; those stop short of the ends and double up branches, while the thinning knows
+/// the shape's components and handles, and the contraction centres and smooths it. The
+/// traced branches stay in `samples.edges`; with the plain L1-medial method the graph is
+/// made of them. For both methods the curves are smoothed (3 passes) and resampled every
+/// 2 voxels, and each vertex gets the distance value at its position as its radius (at
+/// least half a voxel). The `points` lists stay empty: fill them with
+/// `assign_points_to_skeleton()`. The rules and their measurements: \ref design_graph.
 ///
 /// \param samples the result of `contract_samples()`
 /// \param field the distance field the samples were contracted in

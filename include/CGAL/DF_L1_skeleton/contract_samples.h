@@ -338,60 +338,76 @@ public:
 /// L1-median fixed-point iteration of Eq. 8, stage after stage of growing support radius,
 /// with branch tracing and bridge points between stages.
 ///
-/// - **Samples.** About `number_of_samples` points are picked by a voxel-grid pick (the
-///   point nearest the centre of each occupied cell, the cell size chosen so that about M
-///   cells are occupied): deterministic and even, where the L1-medial method draws them
-///   at random.
-/// - **Iteration.** Every free sample moves by Eq. 8, all from the previous iterate, in
-///   the convergent form x <- (A + v B + u (x - R)) / (1 + v), which has the fixed point of
-///   Eq. 7 (see `internal/l1_median_iteration.h` for the derivation and for our reading of
-///   the weight theta_i(n/N) of the skeleton term as N/n). The paper's literal form
-///   x <- (u - v) x + ... diverges when v > 1 + u. With the distance-field guidance a
-///   sample whose step would end in an exterior or outlier voxel, or in a voxel of smaller
-///   distance value, stays where it is for that iteration. A stage ends after
-///   `number_of_iterations` iterations or when the mean step is under 0.05 voxel (about
-///   the L1-medial code's 0.0005 of the longest bounding-box side at V = 100), 0.2 voxel
-///   with the guidance: its graph is the initial skeleton re-centred on the samples, and
-///   over 5 x 72 test cases (5 seeds and sizes) the looser stop gave the same topology in
-///   355 cases instead of 356 and mean axis ratios within 0.002, with 15 to 40 % fewer
-///   iterations (noisy 35k stick figure: 35 to 21). The data term
-///   of a sample sums over the points gathered in cells of h/6 to h/3 (centroid and
-///   count of each cell): the same topology and centring on our test cases as the
-///   single points, many times faster (cells of h/8 to h/4, used before, cost 10 to 15 %
-///   more of the whole run for no measured gain; h/5 to h/2.5 lost a case).
-/// - **Support radius.** Every sample starts with h0 = 2 d_bb / cbrt(N). After a stage,
-///   with the guidance (Eq. 9): the theta-weighted centre c of the initial-skeleton points
-///   in the sample's ball (normalised by the sum of the weights; the paper's division by
-///   n would shrink it towards the origin); if c is within a voxel of the sample, h becomes
-///   the distance value at c (at least two voxels), otherwise h grows by the factor
-///   1 + `support_radius_growth`. Without guidance all samples share h, which grows by
-///   that factor each stage (the L1-medial schedule). A free sample whose h exceeds d_bb
-///   is settled: its ball holds the whole object, so it stays where it is (the
-///   L1-medial stopping rule, applied per sample since the guided radii differ). The
-///   contraction stops when (almost) no sample is left to move; with the guidance also after three
-///   stages that make no new branch point (the free samples left are then settled at the
-///   initial skeleton's junctions or stuck against the distance-field constraint).
-///   At most `contraction_stages` stages run (default 64). With the guidance, where
-///   `build_skeleton_graph()` re-centres the initial skeleton on the samples, one stage
-///   gave the same topology and centring on our 72 test cases in about half the time,
-///   but at h0 the samples of thick parts are still far from the axis (6.8 voxels on
-///   average on the capsule with holes, 1.1 after all stages) and the re-centring then
-///   relies on their symmetry around it.
-/// - **Branches and bridges** between stages: see `internal/branch_tracing.h`.
+/// About `number_of_samples` samples are picked evenly on a voxel grid (deterministic,
+/// where the L1-medial method draws them at random). Each iteration moves every free
+/// sample from the previous iterate by a convergent form of Eq. 8 with the same fixed
+/// point (the paper's literal form diverges when v > 1 + u); with the guidance, a step
+/// that would end in an exterior voxel or at a smaller distance value is not taken, the
+/// attraction term pulls towards the initial skeleton, and each sample's support radius
+/// follows Eq. 9 (the distance value at the centre of the skeleton points in its ball).
+/// Without guidance all samples share one radius growing by 1 + `support_radius_growth`
+/// per stage (the L1-medial schedule). The contraction stops when no sample is left to
+/// move. The rules and their measurements: \ref design_contraction.
 ///
-/// \tparam ConcurrencyTag the iteration and the directionality run with TBB when it is
-///         `CGAL::Parallel_tag`; results do not depend on the number of threads
-/// \tparam PointRange a model of `ConstRange`; its value type is the key type of the
-///         point map (named parameter `point_map`, default the identity on `Traits::Point_3`)
+/// \tparam ConcurrencyTag `CGAL::Sequential_tag`, `CGAL::Parallel_tag` or
+///         `CGAL::Parallel_if_available_tag`: the iteration and the directionality run with
+///         TBB when parallel; results do not depend on the number of threads
+/// \tparam PointRange a model of `ConstRange`; its value type is the key type of the point map
+/// \tparam Traits a model of `Kernel`
 /// \param points the points to contract towards (non-outlier input points and points
 ///        added by upsampling)
 /// \param field the distance field (its grid fixes the voxel size for every method)
-/// \param initial the initial skeleton; its graph vertices are the attractors S
-/// \param np optional named parameters: `skeletonization_method`, `number_of_samples`
-///        (CGAL's, default 1500, at most the number of points), `repulsion_coefficient`
-///        (0.35), `initial_support_radius` (2 d_bb / cbrt N), `support_radius_growth` (0.5),
-///        `branch_directionality` (0.9), `number_of_iterations` (CGAL's: the maximum per
-///        stage, default 30), `contraction_stages` (64)
+/// \param initial the initial skeleton; its graph vertices are the attractors
+/// \param np an optional sequence of named parameters among:
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{point_map}
+///     \cgalParamDescription{a property map associating points to the elements of `points`}
+///     \cgalParamType{a model of `ReadablePropertyMap` whose value type is `Traits::Point_3`}
+///     \cgalParamDefault{`CGAL::Identity_property_map<Traits::Point_3>`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{skeletonization_method}
+///     \cgalParamDescription{the distance-field guided method or the plain L1-medial skeleton}
+///     \cgalParamType{`Skeletonization_method`}
+///     \cgalParamDefault{`Skeletonization_method::DISTANCE_FIELD_GUIDED`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{number_of_samples}
+///     \cgalParamDescription{M, the number of samples contracted (at most the number of points)}
+///     \cgalParamType{`std::size_t`, in [1, 10^8]}
+///     \cgalParamDefault{1500}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{repulsion_coefficient}
+///     \cgalParamDescription{u of Eq. 8, the weight of the repulsion between samples}
+///     \cgalParamType{`double`, in [0, 0.5)}
+///     \cgalParamDefault{0.35}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{initial_support_radius}
+///     \cgalParamDescription{h0, the support radius of the first stage, in input units}
+///     \cgalParamType{`double`, > 0}
+///     \cgalParamDefault{2 d_bb / cbrt(N), N the number of points}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{support_radius_growth}
+///     \cgalParamDescription{the growth of a support radius between stages, h <- (1 + growth) h}
+///     \cgalParamType{`double`, in (0, 4]}
+///     \cgalParamDefault{0.5}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{branch_directionality}
+///     \cgalParamDescription{the directionality sigma above which a sample may become a branch point}
+///     \cgalParamType{`double`, in (1/3, 1)}
+///     \cgalParamDefault{0.9}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{number_of_iterations}
+///     \cgalParamDescription{the most iterations of one support-radius stage}
+///     \cgalParamType{`int`, in [1, 10000]}
+///     \cgalParamDefault{30}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{contraction_stages}
+///     \cgalParamDescription{the most support-radius stages}
+///     \cgalParamType{`int`, in [1, 64]}
+///     \cgalParamDefault{64}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+///
+/// \returns the contracted samples, the traced branches and bridges, and the iterations
 /// \throws Invalid_input if `points` is empty or has a non-finite coordinate, or a
 ///         parameter is out of range
 template <class ConcurrencyTag = CGAL::Parallel_if_available_tag, class PointRange, class Traits,

@@ -230,7 +230,20 @@ std::vector<typename Traits::Point_3> smoothed_points(const Local_quadric_fitter
 ///
 /// \tparam ConcurrencyTag `CGAL::Sequential_tag` or `CGAL::Parallel_tag`
 /// \param points the points (outliers removed: they are no surface)
-/// \param np optional named parameters: `point_map`, `geom_traits`
+/// \param np an optional sequence of named parameters among:
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{point_map}
+///     \cgalParamDescription{a property map associating points to the elements of `points`}
+///     \cgalParamType{a model of `ReadablePropertyMap` whose key type is the value type of
+///       the iterator of `PointRange` and whose value type is `geom_traits::Point_3`}
+///     \cgalParamDefault{`CGAL::Identity_property_map<geom_traits::Point_3>`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{geom_traits}
+///     \cgalParamDescription{an instance of a geometric traits class}
+///     \cgalParamType{a model of `Kernel`}
+///     \cgalParamDefault{the kernel deduced from the point type, using `CGAL::Kernel_traits`}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
 /// \returns the noise estimate, in input units (0 for fewer than 16 points)
 /// \throws Invalid_input if a point is not finite
 template <class ConcurrencyTag = CGAL::Parallel_if_available_tag, class PointRange,
@@ -261,7 +274,25 @@ double estimate_surface_noise(const PointRange& points, const NamedParameters& n
 ///
 /// \tparam ConcurrencyTag `CGAL::Sequential_tag` or `CGAL::Parallel_tag`
 /// \param points the points (outliers removed)
-/// \param np optional named parameters: `point_map`, `geom_traits`, `denoising_neighbors`
+/// \param np an optional sequence of named parameters among:
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{point_map}
+///     \cgalParamDescription{a property map associating points to the elements of `points`}
+///     \cgalParamType{a model of `ReadablePropertyMap` whose key type is the value type of
+///       the iterator of `PointRange` and whose value type is `geom_traits::Point_3`}
+///     \cgalParamDefault{`CGAL::Identity_property_map<geom_traits::Point_3>`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{geom_traits}
+///     \cgalParamDescription{an instance of a geometric traits class}
+///     \cgalParamType{a model of `Kernel`}
+///     \cgalParamDefault{the kernel deduced from the point type, using `CGAL::Kernel_traits`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{denoising_neighbors}
+///     \cgalParamDescription{k, the neighbours of the quadric fitted at each point}
+///     \cgalParamType{`int`, in [6, 256]}
+///     \cgalParamDefault{24}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
 /// \returns the smoothed points, in the order of `points`
 /// \throws Invalid_input if a point is not finite or `denoising_neighbors` is out of range
 template <class ConcurrencyTag = CGAL::Parallel_if_available_tag, class PointRange,

@@ -29,46 +29,35 @@ namespace DF_L1 {
 /// k-th nearest neighbour, p is an outlier when
 /// - d(p) exceeds `ratio` times the median of d over the cloud (an isolated point), or
 /// - d(p) exceeds `local_ratio` times the median of d over the k neighbours of p (a
-///   point hovering over a denser surface).
+///   point hovering a few voxels over a denser surface).
 ///
-/// The paper removes outliers after voxelization, as boundary voxels disconnected from
-/// the volume, and admits that heavy outliers need a pre-filter (LOP). Scattered
-/// outliers are dense enough, at the coarsest voxel size d_bb / 9, to fill most coarse
-/// voxels: the exterior flood then cannot pass between them and encloses them as
-/// "interior". This test removes them first; the voxel test of
-/// `remove_outlier_voxels()` then catches the clusters.
-///
-/// The global test alone lets two kinds of outliers join the volume, and a skeleton
-/// branch grows towards them (measured on the synthetic shapes with 5-10 % uniform
-/// outliers, as few as 85 % of the outliers more than 3 voxels off the surface were
-/// caught):
-/// - outliers a few voxels off the surface, whose k-th neighbour is a surface point
-///   nearer than `ratio` median distances. The local test sees them: at height h over
-///   a surface where d = m, an outlier has d = sqrt(h^2 + m^2), so it is flagged from
-///   h = sqrt(local_ratio^2 - 1) m (1.7 m by default). A surface point is compared with
-///   neighbours sampled like itself, so a smooth density change (10:1 across the shape)
-///   or a sparse cloud does not matter; random sampling alone rarely doubles d between
-///   neighbours (measured: at most 5 surface points in 20000 flagged).
-/// - outliers that fell near a few others. The tests are repeated without the points
-///   already flagged until none is added: a chance cluster loses its flagged members
-///   and the others stand out. The global threshold stays that of the first pass.
-///   The price is paid by a wire sampled as a curve rather than a surface: d varies
-///   more along a curve, and an end point has all its neighbours on one side (twice
-///   their d), so about 1 % of its samples are flagged, scattered (measured).
-///
-/// With both, at least 98 % of those outliers are caught. An outlier glued to the
-/// surface (closer than the sampling spacing) is not flagged: it is noise of the
-/// surface. The global test needs no uniform density either: a region ten times sparser
-/// than the median has a k-th neighbour about 3.2 times farther, below the default
-/// ratio of 4. Each pass measures every point independently and flags in index order,
-/// so the result does not depend on the number of threads.
+/// The tests repeat without the points already flagged until none is added, so that a
+/// chance cluster of outliers loses its flagged members and the others stand out. The
+/// paper removes outliers after voxelization only; scattered outliers fill most voxels of
+/// the coarsest grid, and the exterior flood could not pass between them. An outlier
+/// closer to the surface than the sampling spacing is noise of the surface and stays.
+/// Each pass measures every point independently, so the result does not depend on the
+/// number of threads. The rules and their measurements: \ref design_outliers.
 ///
 /// \tparam ConcurrencyTag `CGAL::Sequential_tag` or `CGAL::Parallel_tag`
 /// \param points the input points
 /// \param k the neighbour whose distance is measured (default 6)
 /// \param ratio the multiple of the cloud's median distance above which a point is an
 ///        outlier (default 4)
-/// \param np optional named parameters: `point_map`, `geom_traits`
+/// \param np an optional sequence of named parameters among:
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{point_map}
+///     \cgalParamDescription{a property map associating points to the elements of `points`}
+///     \cgalParamType{a model of `ReadablePropertyMap` whose key type is the value type of
+///       the iterator of `PointRange` and whose value type is `geom_traits::Point_3`}
+///     \cgalParamDefault{`CGAL::Identity_property_map<geom_traits::Point_3>`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{geom_traits}
+///     \cgalParamDescription{an instance of a geometric traits class}
+///     \cgalParamType{a model of `Kernel`}
+///     \cgalParamDefault{the kernel deduced from the point type, using `CGAL::Kernel_traits`}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
 /// \param local_ratio the multiple of the median distance of a point's k neighbours
 ///        above which it is an outlier (default 2; `std::numeric_limits<double>::infinity()`
 ///        leaves the global test alone, still repeated)

@@ -78,7 +78,7 @@ CGAL_DF_L1_ADD_NAMED_PARAMETER(df_l1_voxel_resolution, voxel_resolution)
 /// multiple of the finest voxel size (default: d_bb / 9).
 CGAL_DF_L1_ADD_NAMED_PARAMETER(df_l1_initial_voxel_size, initial_voxel_size)
 /// \ingroup PkgDFL1SkeletonNamedParameters
-/// How many 26-neighbour steps the exterior label may spread through the empty
+/// How many face-neighbour steps the exterior label may spread through the empty
 /// sub-voxels of a boundary voxel at each refinement level (default 1, the paper's rule).
 CGAL_DF_L1_ADD_NAMED_PARAMETER(df_l1_exterior_propagation_steps, exterior_propagation_steps)
 /// \ingroup PkgDFL1SkeletonNamedParameters

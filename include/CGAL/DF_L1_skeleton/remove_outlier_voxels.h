@@ -49,6 +49,7 @@ struct Outlier_voxel_statistics
 /// \cgalNamedParamsBegin
 ///   \cgalParamNBegin{outlier_component_size}
 ///     \cgalParamDescription{the largest extent, in voxels, of a removable component}
+///     \cgalParamType{`int`, in [0, 2^20]}
 ///     \cgalParamDefault{max(3, V / 10), V the longest side of the grid in voxels}
 ///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
@@ -99,7 +100,14 @@ Voxel_grid<Traits> remove_outlier_voxels(const Voxel_grid<Traits>& grid,
 /// \tparam PointRange a model of `ConstRange`; its value type is the key type of the point map
 /// \param points the points to classify
 /// \param grid the grid returned by `remove_outlier_voxels()`
-/// \param np optional named parameters: `point_map` (default `CGAL::Identity_property_map`)
+/// \param np an optional sequence of named parameters among:
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{point_map}
+///     \cgalParamDescription{a property map associating points to the elements of `points`}
+///     \cgalParamType{a model of `ReadablePropertyMap` whose value type is `Traits::Point_3`}
+///     \cgalParamDefault{`CGAL::Identity_property_map<Traits::Point_3>`}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
 /// \returns one flag per point, `true` for an outlier
 template <class PointRange, class Traits, class NamedParameters = parameters::Default_named_parameters>
 std::vector<bool> flag_outlier_points(const PointRange& points, const Voxel_grid<Traits>& grid,

@@ -52,16 +52,30 @@ namespace DF_L1 {
 /// \param output receives the inserted points (the input is not changed)
 /// \param np an optional sequence of named parameters among:
 /// \cgalNamedParamsBegin
-///   \cgalParamNBegin{point_map} \cgalParamDefault{`CGAL::Identity_property_map`} \cgalParamNEnd
-///   \cgalParamNBegin{geom_traits} \cgalParamDefault{the kernel of the point type} \cgalParamNEnd
+///   \cgalParamNBegin{point_map}
+///     \cgalParamDescription{a property map associating points to the elements of `points`}
+///     \cgalParamType{a model of `ReadablePropertyMap` whose key type is the value type of
+///       the iterator of `PointRange` and whose value type is `geom_traits::Point_3`}
+///     \cgalParamDefault{`CGAL::Identity_property_map<geom_traits::Point_3>`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{geom_traits}
+///     \cgalParamDescription{an instance of a geometric traits class}
+///     \cgalParamType{a model of `Kernel`}
+///     \cgalParamDefault{the kernel deduced from the point type, using `CGAL::Kernel_traits`}
+///   \cgalParamNEnd
 ///   \cgalParamNBegin{upsampling_neighbors}
-///     \cgalParamDescription{k of the density k / r^3, in [1, 64]} \cgalParamDefault{5}
+///     \cgalParamDescription{k of the density k / r^3}
+///     \cgalParamType{`int`, in [1, 64]}
+///     \cgalParamDefault{5}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{upsampling_radius}
-///     \cgalParamDescription{r, in input units} \cgalParamDefault{3 d_bb / cbrt(N)}
+///     \cgalParamDescription{r of the density k / r^3, in input units}
+///     \cgalParamType{`double`, > 0}
+///     \cgalParamDefault{3 d_bb / cbrt(N), N the number of points}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{voxel_resolution}
 ///     \cgalParamDescription{V; the spacing of inserted points is the longest bbox side / V}
+///     \cgalParamType{`int`, in [3, 2048]}
 ///     \cgalParamDefault{100}
 ///   \cgalParamNEnd
 /// \cgalNamedParamsEnd

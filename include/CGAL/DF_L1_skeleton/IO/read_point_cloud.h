@@ -204,8 +204,7 @@ Point_cloud<Kernel> read_ply_point_cloud(std::istream& in, const std::string& na
 ///   (a face line, say), is an error naming the line. All the lines of the
 ///   file are read. A first line of 1 to 3 non-negative integers only (such as
 ///   `3 0 0`) reads as the counts line of a header whose keyword is missing and
-///   is an error, as before: such a line cannot be told from a vertex with
-///   certainty.
+///   is an error: such a line cannot be told from a vertex with certainty.
 ///
 /// \tparam Kernel a CGAL kernel providing `Point_3` and `Vector_3`
 /// \param in the stream to read to its end

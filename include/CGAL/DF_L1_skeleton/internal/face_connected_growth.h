@@ -26,8 +26,8 @@ namespace internal {
 // enterable voxels that hold a marked voxel. The components are found on runs along x
 // (one union-find node per run, joined to the runs it overlaps in the rows below and
 // behind it), so that the cost is a scan of the grid and a few operations per run: the
-// exterior, most of the grid in drop_enclosed_exterior(), is a few runs per row. (A
-// scanline fill, before that a walk voxel by voxel, read each voxel several times.)
+// exterior, most of the grid in drop_enclosed_exterior(), is a few runs per row; a
+// scanline fill reads each voxel several times.
 template <class Traits, class CanEnter>
 void grow_face_connected(const Grid_geometry<Traits>& g, std::vector<char>& marked, const CanEnter& can_enter)
 {
