@@ -5,6 +5,8 @@
 // happy paths, the in-the-wild header variants, and malformed inputs, which
 // must all give a one-line Read_error naming the file and the line or vertex.
 
+#include "support/shared_data.h"
+
 #include <CGAL/DF_L1_skeleton/IO/read_point_cloud.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
@@ -160,18 +162,6 @@ private:
   bool big_;
   std::string bytes_;
 };
-
-bool shared_data_available(std::string& dir)
-{
-#ifdef DF_L1_SHARED_DATA_DIR
-  dir = DF_L1_SHARED_DATA_DIR;
-  std::error_code ec;
-  return fs::is_directory(dir, ec);
-#else
-  (void)dir;
-  return false;
-#endif
-}
 
 } // namespace
 
@@ -564,13 +554,11 @@ TEST_CASE("off: headerless files with inconsistent or bad lines are errors", "[i
   require_read_error(dir.write("counts1.off", "# c\n2\n0.5 0 0\n1 1 1\n"), {"line 2", "OFF"});
 }
 
-TEST_CASE("read_point_cloud: the shared headerless and misaligned OFF files load", "[io][read][data]")
+TEST_CASE("read_point_cloud: the shared headerless and misaligned OFF files load", "[io][read][data][shared_data]")
 {
-  std::string dir;
-  if(!shared_data_available(dir)) {
-    WARN("skipped: shared data directory (DF_L1_SHARED_DATA_DIR) not found");
+  const std::string dir = DF_L1_test::shared_data_folder();
+  if(dir.empty())
     return;
-  }
   struct Expected
   {
     const char* file;
@@ -582,10 +570,8 @@ TEST_CASE("read_point_cloud: the shared headerless and misaligned OFF files load
   for(const Expected& e : expected) {
     const std::string path = (fs::path(dir) / e.file).string();
     INFO(path);
-    if(!fs::exists(path)) {
-      WARN("skipped: " << path << " not found");
+    if(DF_L1_test::shared_data_file(e.file).empty())
       continue;
-    }
     const Cloud pc = read_unmodified(path);
     CHECK(pc.points.size() == e.points);
     CHECK(pc.normals.size() == (e.normals ? e.points : 0));
@@ -999,13 +985,11 @@ TEST_CASE("read_point_cloud: a large OFF loads whole", "[io][read][off]")
   CHECK(pc.points.back() != pc.points.front());
 }
 
-TEST_CASE("read_point_cloud: the shared real data sets load", "[io][read][data]")
+TEST_CASE("read_point_cloud: the shared real data sets load", "[io][read][data][shared_data]")
 {
-  std::string dir;
-  if(!shared_data_available(dir)) {
-    WARN("skipped: shared data directory (DF_L1_SHARED_DATA_DIR) not found");
+  const std::string dir = DF_L1_test::shared_data_folder();
+  if(dir.empty())
     return;
-  }
   struct Expected
   {
     const char* file;
@@ -1021,10 +1005,8 @@ TEST_CASE("read_point_cloud: the shared real data sets load", "[io][read][data]"
   for(const Expected& e : expected) {
     const std::string path = (fs::path(dir) / e.file).string();
     INFO(path);
-    if(!fs::exists(path)) {
-      WARN("skipped: " << path << " not found");
+    if(DF_L1_test::shared_data_file(e.file).empty())
       continue;
-    }
     const Cloud pc = read_unmodified(path);
     CHECK(pc.points.size() == e.points);
     CHECK(pc.normals.size() == (e.normals ? e.points : 0));

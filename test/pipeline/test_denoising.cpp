@@ -1,5 +1,6 @@
 // Stage 0b: the surface-noise estimate and the smoothing onto local quadrics.
 #include "evaluation/shape_corpus.h"
+#include "support/threads.h"
 #include "evaluation/synthetic_shapes.h"
 
 #include <CGAL/DF_L1_skeleton.h>
@@ -90,12 +91,10 @@ TEST_CASE("denoising: smoothed points lie closer to the surface, the same for an
     const double after = mean_surface_distance(shape_by_name(name), smoothed);
     INFO(name << ": mean distance to the surface " << before << " -> " << after);
     CHECK(after < 0.75 * before);
-    std::vector<Point_3> one_thread;
-    {
-      tbb::global_control limit(tbb::global_control::max_allowed_parallelism, 1);
-      one_thread = DF::denoise_point_set(noisy.points);
-    }
+    const std::vector<Point_3> one_thread =
+      DF_L1_test::with_threads(1, [&] { return DF::denoise_point_set(noisy.points); });
     CHECK(one_thread == smoothed);
+    CHECK(DF_L1_test::with_threads(2, [&] { return DF::denoise_point_set(noisy.points); }) == smoothed);
     CHECK(DF::denoise_point_set<CGAL::Sequential_tag>(noisy.points) == smoothed);
   }
   // a clean sample barely moves: the quadric follows the surface

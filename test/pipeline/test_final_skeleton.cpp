@@ -2,17 +2,23 @@
 // synthetic shapes with known skeletons.
 #include "evaluation/skeleton_quality.h"
 #include "evaluation/synthetic_shapes.h"
+#include "support/threads.h"
 
 #include <CGAL/DF_L1_skeleton.h>
 
-#include <tbb/global_control.h>
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/partitioner.h>
 
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <atomic>
+#include <chrono>
 #include <cmath>
 #include <limits>
 #include <string>
+#include <thread>
 #include <vector>
 
 namespace DF = CGAL::DF_L1;
@@ -124,23 +130,43 @@ TEST_CASE("final skeleton: the free function, the class run at once and stage by
   const std::vector<bool>& outliers = staged.outlier_flags();
   for(std::size_t i = 0; i < owner.size(); ++i)
     REQUIRE(owner[i] == (outliers[i] ? 0 : 1));
-  // radii are the distance values at the vertices, positive inside the shape
+  // each radius is the distance value at its vertex, at least half a voxel; most
+  // vertices lie deeper than that
+  const auto& field = staged.distance_field();
+  const double half_voxel = 0.5 * CGAL::to_double(field.voxel_size);
+  std::size_t deeper = 0;
   for(std::size_t v = 0; v < boost::num_vertices(direct); ++v)
-    CHECK(direct[v].radius > 0);
+  {
+    const double expected = (std::max)(CGAL::to_double(field.value_at(direct[v].point)), half_voxel);
+    CHECK(CGAL::to_double(direct[v].radius) == Approx(expected).epsilon(1e-12));
+    deeper += expected > half_voxel;
+  }
+  CHECK(deeper > boost::num_vertices(direct) / 2);
+}
+
+TEST_CASE("threads: with_threads(2) runs two threads at once, even on one core", "[determinism]")
+{
+  // Each of two tasks waits for the other: with one thread the first would wait alone.
+  std::atomic<int> arrived{0};
+  std::atomic<int> met{0};
+  DF_L1_test::with_threads(2, [&] {
+    tbb::parallel_for(tbb::blocked_range<int>(0, 2, 1), [&](const tbb::blocked_range<int>&) {
+      ++arrived;
+      const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(20);
+      while(arrived.load() < 2 && std::chrono::steady_clock::now() < deadline)
+        std::this_thread::yield();
+      met += arrived.load() == 2;
+    }, tbb::simple_partitioner());
+  });
+  CHECK(met.load() == 2);
 }
 
 TEST_CASE("final skeleton: 1 and 2 threads give the same skeleton", "[final]")
 {
   const Sample sample = sample_of("star", Variant::noise, 3);
   Graph one, two;
-  {
-    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, 1);
-    CGAL::extract_df_l1_skeleton(sample.points, one);
-  }
-  {
-    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, 2);
-    CGAL::extract_df_l1_skeleton(sample.points, two);
-  }
+  DF_L1_test::with_threads(1, [&] { CGAL::extract_df_l1_skeleton(sample.points, one); });
+  DF_L1_test::with_threads(2, [&] { CGAL::extract_df_l1_skeleton(sample.points, two); });
   CHECK(same_graph(one, two));
   Graph sequential;
   CGAL::extract_df_l1_skeleton<CGAL::Sequential_tag>(sample.points, sequential);

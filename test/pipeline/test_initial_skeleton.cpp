@@ -1,6 +1,7 @@
 // Geometry and topology of the initial skeleton (paper, section 5) on synthetic shapes
 // with known skeletons, and the voxel topology it relies on.
 #include "evaluation/synthetic_shapes.h"
+#include "support/threads.h"
 
 #include <CGAL/DF_L1_skeleton.h>
 #include <CGAL/DF_L1_skeleton/internal/contractible_cycles.h>
@@ -198,8 +199,7 @@ TEST_CASE("initial skeleton: the same for 1 and 2 threads", "[initial][determini
   const std::vector<Point_3> points =
     DF_L1_test::make_sample(DF_L1_test::shape_by_name("branching_tree"), Variant::noise, 20000, 6).points;
   const auto run_with = [&](int threads) {
-    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, std::size_t(threads));
-    return run_volumetric_stages(points);
+    return DF_L1_test::with_threads(threads, [&] { return run_volumetric_stages(points); });
   };
   const Volumetric_result one = run_with(1), two = run_with(2);
   REQUIRE(one.initial.points == two.initial.points);

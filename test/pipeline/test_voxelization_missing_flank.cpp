@@ -2,6 +2,7 @@
 // flank): the parity vote keeps the part's interior, without closing the real holes of
 // the shape; and the vote itself on small voxel shells.
 #include "evaluation/synthetic_shapes.h"
+#include "support/threads.h"
 #include "support/voxel_checks.h"
 
 #include <CGAL/DF_L1_skeleton.h>
@@ -182,7 +183,8 @@ TEST_CASE("parity votes: the runs counted along every ray, as a walk voxel by vo
     if(rng.uniform() < 0.05)
       shell[v] = 1;
   const auto sequential = DF::internal::odd_crossing_votes<CGAL::Sequential_tag>(shell, dims);
-  const auto parallel = DF::internal::odd_crossing_votes<CGAL::Parallel_if_available_tag>(shell, dims);
+  const auto parallel = DF_L1_test::with_threads(
+    2, [&] { return DF::internal::odd_crossing_votes<CGAL::Parallel_if_available_tag>(shell, dims); });
   CHECK(sequential == parallel);
   std::size_t wrong = 0, odd = 0;
   for(int k = 0; k < dims[2]; ++k)
@@ -229,10 +231,12 @@ TEST_CASE("parity votes: the same votes and box means for 1 and 2 threads", "[vo
     used[v] = !shell[v];
   }
   const auto sequential = DF::internal::odd_crossing_votes<CGAL::Sequential_tag>(shell, dims);
-  const auto parallel = DF::internal::odd_crossing_votes<CGAL::Parallel_if_available_tag>(shell, dims);
+  const auto parallel = DF_L1_test::with_threads(
+    2, [&] { return DF::internal::odd_crossing_votes<CGAL::Parallel_if_available_tag>(shell, dims); });
   CHECK(sequential == parallel);
   CHECK(std::count(sequential.begin(), sequential.end(), std::uint8_t(0)) < std::ptrdiff_t(n)); // not all zero
-  const auto mean = DF::internal::box_mean_votes<CGAL::Parallel_if_available_tag>(sequential, used, dims, 2);
+  const auto mean = DF_L1_test::with_threads(
+    2, [&] { return DF::internal::box_mean_votes<CGAL::Parallel_if_available_tag>(sequential, used, dims, 2); });
   CHECK(DF::internal::box_mean_votes<CGAL::Sequential_tag>(sequential, used, dims, 2) == mean);
   std::size_t wrong = 0;
   for(int sample = 0; sample < 300; ++sample)
@@ -317,36 +321,4 @@ TEST_CASE("parity votes: the shell's ball dilation equals the thresholded distan
     CHECK(differences == 0);
     CHECK(marked >= std::size_t(std::count(sites.begin(), sites.end(), 1)));
   }
-}
-
-TEST_CASE("real scans: the camel, missing most of a flank, is one tree", "[voxels][holes][real]")
-{
-#ifdef DF_L1_SHARED_DATA_DIR
-  const std::string path = std::string(DF_L1_SHARED_DATA_DIR) + "/camel_scan.off";
-#else
-  const std::string path;
-#endif
-  std::error_code ec;
-  if(path.empty() || !std::filesystem::is_regular_file(path, ec))
-  {
-    WARN("skipped: camel_scan.off not found in the shared data folder (DF_L1_SHARED_DATA_DIR)");
-    return;
-  }
-  const auto cloud = DF::read_point_cloud<Kernel>(path);
-  CGAL::DF_L1_skeletonization<Kernel> s(cloud.points);
-  // Measured: 43,058 interior voxels and a deepest voxel 13.4 voxels inside (7,697 and
-  // 3.7 before the parity vote: the body was a thin shell, its skeleton 14 pieces).
-  CHECK(s.voxel_grid().count(DF::Voxel_label::INTERIOR) > 30000);
-  CHECK(s.distance_field().maximum() > 10);
-  const DF::Skeleton_statistics initial = DF::skeleton_statistics(s.initial_skeleton().graph);
-  INFO("initial: " << initial.components << " components, " << initial.cycles << " cycles, " << initial.end_points
-                   << " end points");
-  CHECK(initial.components == 1);
-  CHECK(initial.cycles == 0);
-  CHECK(initial.end_points >= 5); // 4 legs and the head at least
-  CHECK(initial.end_points <= 16); // with the hair of the thin lower legs, which the final skeleton prunes
-  const DF::Skeleton_statistics final_skeleton = DF::skeleton_statistics(s.skeleton());
-  INFO("final: " << final_skeleton.components << " components, " << final_skeleton.cycles << " cycles");
-  CHECK(final_skeleton.components == 1);
-  CHECK(final_skeleton.cycles == 0);
 }
