@@ -7,4 +7,4 @@ build="$root/build"
 cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DDF_L1_BUILD_TESTS=ON >/dev/null
 cmake --build "$build" -j2
 cd "$build"
-ctest --output-on-failure
+ctest --output-on-failure -j2
