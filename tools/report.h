@@ -73,7 +73,7 @@ std::string report_json(const Settings& s, CGAL::DF_L1_skeletonization<Kernel, C
       .number("number_of_iterations", skeletonization.number_of_iterations())
       .number("contraction_stages", skeletonization.contraction_stages());
   Json_object counts;
-  counts.number("input_points", double(skeletonization.input_points().size()))
+  counts.number("input_points", double(skeletonization.number_of_input_points()))
     .number("added_points", double(skeletonization.added_points().size()))
     .number("outlier_points", double(skeletonization.number_of_outliers()))
     .number("sparse_outlier_points", double(skeletonization.number_of_sparse_outliers()))

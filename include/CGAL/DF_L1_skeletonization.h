@@ -21,6 +21,7 @@
 #include <CGAL/DF_L1_skeleton/errors.h>
 #include <CGAL/DF_L1_skeleton/extract_initial_skeleton.h>
 #include <CGAL/DF_L1_skeleton/flag_sparse_outliers.h>
+#include <CGAL/DF_L1_skeleton/internal/normalization.h>
 #include <CGAL/DF_L1_skeleton/internal/point_gap_cuts.h>
 #include <CGAL/DF_L1_skeleton/internal/point_range.h>
 #include <CGAL/DF_L1_skeleton/internal/sampling_spacing.h>
@@ -57,6 +58,14 @@ namespace CGAL {
 /// a user can call the last one alone. Every length parameter left unset derives from
 /// the input (the diagonal d_bb of its bounding box, or the voxel size), so a scaled
 /// cloud gives a scaled result; the getters return the values actually used.
+///
+/// Scale: the stages run on the points moved to the centre of their bounding box,
+/// divided by its diagonal and rounded to multiples of 2^-32 (2.3e-10 of the diagonal,
+/// far below any scanner's precision); every result and length is mapped back to input
+/// units by the getters. A cloud of coordinates of the order of 1e300 or 1e-300 thus gives
+/// the same skeleton, scaled, as one of the order of 1: equal within a relative 1e-9 for
+/// any factor, bit for bit for a power of two. A cloud whose extent exceeds the largest
+/// `double`, or is below the smallest normal `double` (2.2e-308), is refused.
 ///
 /// Numbers: the points are kept in the kernel's type; the voxel grid's origin and voxel
 /// size are the kernel's `FT`; everything else (distance field, thinning, contraction,
@@ -97,18 +106,22 @@ public:
   ///        `surface_noise` to `surface_noise()`
   /// \throws DF_L1::Invalid_input if the range is empty, holds a non-finite coordinate,
   ///         all its points coincide or lie on a plane (within a quarter of a voxel, RMS),
-  ///         or a parameter is out of range
+  ///         their extent exceeds the largest `double`, or a parameter is out of range
   template <class PointRange, class NamedParameters = parameters::Default_named_parameters>
   explicit DF_L1_skeletonization(const PointRange& points, const NamedParameters& np = parameters::default_values())
   {
     typedef Point_set_processing_3_np_helper<const PointRange, NamedParameters> NP_helper;
     const auto point_map = NP_helper::get_const_point_map(points, np);
-    for(const auto& p : points)
-      points_.push_back(get(point_map, p));
-    const CGAL::Bbox_3 box = DF_L1::internal::checked_bbox(points_, CGAL::Identity_property_map<Point>(), stage_name);
-    if(!(DF_L1::internal::longest_side(box) > 0))
-      throw DF_L1::Invalid_input(std::string(stage_name) + ": all " + std::to_string(points_.size()) +
+    const CGAL::Bbox_3 input_box = DF_L1::internal::checked_bbox(points, point_map, stage_name, true);
+    normalization_ = DF_L1::internal::Normalization(input_box, stage_name);
+    if(!(DF_L1::internal::longest_side(input_box) > 0))
+      throw DF_L1::Invalid_input(std::string(stage_name) + ": all " +
+                                 std::to_string(DF_L1::internal::range_size(points, point_map)) +
                                  " points coincide; there is no shape to skeletonize");
+    points_.reserve(DF_L1::internal::range_size(points, point_map));
+    for(const auto& p : points)
+      points_.push_back(normalization_.to_internal(get(point_map, p)));
+    const CGAL::Bbox_3 box = DF_L1::internal::checked_bbox(points_, CGAL::Identity_property_map<Point>(), stage_name);
     diagonal_ = DF_L1::internal::diagonal(box);
     longest_side_ = DF_L1::internal::longest_side(box);
     thickness_ = rms_distance_to_best_plane(points_);
@@ -176,7 +189,7 @@ public:
       DF_L1::upsample_sparse_regions<ConcurrencyTag>(
         kept_points_, std::back_inserter(added_points_),
         parameters::upsampling_neighbors(parameters_.upsampling_neighbors,
-        parameters::upsampling_radius(upsampling_radius(),
+        parameters::upsampling_radius(internal_upsampling_radius(),
         parameters::voxel_resolution(parameters_.voxel_resolution))));
     }
     upsampled_ = true;
@@ -191,7 +204,7 @@ public:
     upsample();
     raw_grid_ = std::make_unique<Voxel_grid>(DF_L1::voxelize_point_set<ConcurrencyTag>(
       kept_and_added_points(), parameters::voxel_resolution(parameters_.voxel_resolution,
-           parameters::initial_voxel_size(initial_voxel_size(),
+           parameters::initial_voxel_size(internal_initial_voxel_size(),
            parameters::exterior_propagation_steps(parameters_.exterior_propagation_steps,
            parameters::open_crotches(!denoised_))))));
   }
@@ -290,15 +303,18 @@ public:
   /// Runs every stage that has not run and copies the final skeleton into `skeleton`.
   void operator()(Skeleton& skeleton)
   {
-    convert_to_skeleton();
-    skeleton = *skeleton_;
+    skeleton = this->skeleton();
   }
   /// @}
 
   /// \name Results
   /// Each runs the stages it needs.
   /// @{
-  const std::vector<Point>& input_points() const { return points_; } ///< the input points, in input order
+  /// the input points, in input order, as the stages see them: mapped back from their
+  /// frame, within 2.3e-10 of the bounding box diagonal of the given points
+  const std::vector<Point>& input_points() const { return in_input_units(input_points_, points_); }
+  /// the number of input points
+  std::size_t number_of_input_points() const { return points_.size(); }
   /// one flag per input point: scattered outliers and points of outlier voxels
   const std::vector<bool>& outlier_flags() { remove_outlier_voxels(); return outliers_; }
   /// number of input points flagged as outliers
@@ -306,7 +322,7 @@ public:
   /// number of input points flagged by `flag_sparse_outliers()` alone
   std::size_t number_of_sparse_outliers() { flag_outliers(); return sparse_outlier_count_; }
   /// the estimated noise of the surface, input units (`estimate_surface_noise()`)
-  double surface_noise() { denoise(); return surface_noise_; }
+  double surface_noise() { denoise(); return normalization_.to_input(surface_noise_); }
   /// how the noise estimate grows from 10 to 40 neighbours per fit; the points are
   /// smoothed automatically only below 3 (see `denoise()`). Measured only when the
   /// smoothing is automatic and the noise estimate exceeds its threshold; 0 otherwise.
@@ -315,17 +331,17 @@ public:
   bool denoised() { denoise(); return denoised_; }
   /// the points that are not scattered outliers, in input order, at the positions the
   /// later stages use (smoothed when `denoised()`)
-  const std::vector<Point>& kept_points() { denoise(); return kept_points_; }
+  const std::vector<Point>& kept_points() { denoise(); return in_input_units(kept_points_in_input_units_, kept_points_); }
   /// the points added in sparse regions
-  const std::vector<Point>& added_points() { upsample(); return added_points_; }
+  const std::vector<Point>& added_points() { upsample(); return in_input_units(added_points_in_input_units_, added_points_); }
   /// the voxels after outlier removal
-  const Voxel_grid& voxel_grid() { remove_outlier_voxels(); return *grid_; }
+  const Voxel_grid& voxel_grid() { remove_outlier_voxels(); return in_input_units(grid_in_input_units_, *grid_); }
   /// what the outlier voxel removal found
   const DF_L1::Outlier_voxel_statistics& outlier_voxel_statistics() { remove_outlier_voxels(); return outlier_voxel_statistics_; }
   /// the distance field
-  const Distance_field& distance_field() { compute_distance_field(); return *field_; }
+  const Distance_field& distance_field() { compute_distance_field(); return in_input_units(field_in_input_units_, *field_); }
   /// the initial skeleton: the skeleton voxels S and a curve graph through them
-  const Initial_skeleton& initial_skeleton() { extract_initial_skeleton(); return *initial_; }
+  const Initial_skeleton& initial_skeleton() { extract_initial_skeleton(); return in_input_units(initial_in_input_units_, *initial_); }
   /// the contracted samples, their branches, and the samples after every iteration: as
   /// the stages run by `contract()` left them, or all stages when the contraction has not
   /// started
@@ -333,10 +349,10 @@ public:
   {
     if(!contracted_)
       contract_until_convergence();
-    return *contracted_;
+    return in_input_units(contracted_in_input_units_, *contracted_);
   }
   /// the final skeleton
-  const Skeleton& skeleton() { convert_to_skeleton(); return *skeleton_; }
+  const Skeleton& skeleton() { convert_to_skeleton(); return in_input_units(skeleton_in_input_units_, *skeleton_); }
   /// @}
 
   /// \name Parameters
@@ -345,7 +361,7 @@ public:
   /// `DF_L1::Invalid_input` out of range, as the constructor does) and discards the
   /// results of the stages that depend on it; the next stage function recomputes them.
   /// @{
-  double bbox_diagonal() const { return diagonal_; } ///< d_bb
+  double bbox_diagonal() const { return normalization_.to_input(diagonal_); } ///< d_bb
   /// the parameters as given (derived lengths left empty when they were not set)
   const DF_L1::Parameters& parameters() const { return parameters_; }
   /// sets every parameter at once, discarding the results from the first stage whose
@@ -375,20 +391,12 @@ public:
   int upsampling_neighbors() const { return parameters_.upsampling_neighbors; } ///< k of the density test
   void set_upsampling_neighbors(int k) { set([&](DF_L1::Parameters& p) { p.upsampling_neighbors = k; }); } ///< \sa `upsampling_neighbors()`
   /// r of the density test (input units; default 3 d_bb / cbrt(N), N the input points)
-  double upsampling_radius() const
-  {
-    return parameters_.upsampling_radius ? *parameters_.upsampling_radius
-                                         : DF_L1::internal::default_upsampling_radius(diagonal_, points_.size());
-  }
+  double upsampling_radius() const { return normalization_.to_input(internal_upsampling_radius()); }
   void set_upsampling_radius(double r) { set([&](DF_L1::Parameters& p) { p.upsampling_radius = r; }); } ///< \sa `upsampling_radius()`
   int voxel_resolution() const { return parameters_.voxel_resolution; } ///< V
   void set_voxel_resolution(int V) { set([&](DF_L1::Parameters& p) { p.voxel_resolution = V; }); } ///< \sa `voxel_resolution()`
   /// s0, the size of the coarsest voxels before rounding (input units; default d_bb / 9)
-  double initial_voxel_size() const
-  {
-    return parameters_.initial_voxel_size ? *parameters_.initial_voxel_size
-                                          : DF_L1::internal::default_initial_voxel_size(diagonal_);
-  }
+  double initial_voxel_size() const { return normalization_.to_input(internal_initial_voxel_size()); }
   void set_initial_voxel_size(double s0) { set([&](DF_L1::Parameters& p) { p.initial_voxel_size = s0; }); } ///< \sa `initial_voxel_size()`
   int exterior_propagation_steps() const { return parameters_.exterior_propagation_steps; } ///< exterior steps per level
   /// \sa `exterior_propagation_steps()`
@@ -411,7 +419,7 @@ public:
   void set_repulsion_coefficient(double u) { set([&](DF_L1::Parameters& p) { p.repulsion_coefficient = u; }); } ///< \sa `repulsion_coefficient()`
   /// h0, the initial support radius (input units; default 2 d_bb / cbrt(N), N the kept
   /// and added points, known once upsampled)
-  double initial_support_radius() { upsample(); return resolved_initial_support_radius(); }
+  double initial_support_radius() { upsample(); return normalization_.to_input(internal_initial_support_radius()); }
   void set_initial_support_radius(double h) { set([&](DF_L1::Parameters& p) { p.initial_support_radius = h; }); } ///< \sa `initial_support_radius()`
   double support_radius_growth() const { return parameters_.support_radius_growth; } ///< growth ratio of h between stages
   void set_support_radius_growth(double r) { set([&](DF_L1::Parameters& p) { p.support_radius_growth = r; }); } ///< \sa `support_radius_growth()`
@@ -449,7 +457,7 @@ private:
       kept_and_added_points(), *field_, *initial_,
       parameters::skeletonization_method(parameters_.skeletonization_method,
       parameters::repulsion_coefficient(parameters_.repulsion_coefficient,
-      parameters::initial_support_radius(resolved_initial_support_radius(),
+      parameters::initial_support_radius(internal_initial_support_radius(),
       parameters::support_radius_growth(parameters_.support_radius_growth,
       parameters::branch_directionality(parameters_.branch_directionality,
       parameters::contraction_stages(parameters_.contraction_stages,
@@ -461,7 +469,9 @@ private:
   void take_contracted_samples()
   {
     contracted_ = std::make_unique<Contracted_samples>(contraction_->result());
+    contracted_in_input_units_.reset();
     skeleton_.reset();
+    skeleton_in_input_units_.reset();
   }
 
   // Changes a copy of the parameters and sets it.
@@ -486,31 +496,44 @@ private:
       denoise_checked_ = denoised_ = false;
       surface_noise_ = residual_growth_ = 0;
       kept_points_.clear();
+      kept_points_in_input_units_.reset();
     }
     if(first <= 2)
     {
       upsampled_ = false;
       added_points_.clear();
+      added_points_in_input_units_.reset();
     }
     if(first <= 3)
       raw_grid_.reset();
     if(first <= 4)
     {
       grid_.reset();
+      grid_in_input_units_.reset();
       outliers_.clear();
       outlier_count_ = 0;
     }
     if(first <= 5)
+    {
       field_.reset();
+      field_in_input_units_.reset();
+    }
     if(first <= 6)
+    {
       initial_.reset();
+      initial_in_input_units_.reset();
+    }
     if(first <= 7)
     {
       contraction_.reset();
       contracted_.reset();
+      contracted_in_input_units_.reset();
     }
     if(first <= 8)
+    {
       skeleton_.reset();
+      skeleton_in_input_units_.reset();
+    }
   }
 
   // The RMS distance of the points to their best-fitting plane (the smallest standard
@@ -540,12 +563,32 @@ private:
                                  " points lie on a plane (RMS distance to it under a quarter of a voxel); they enclose no volume");
   }
 
+  // The length parameters in the frame of the stages: as set, or derived from d_bb.
+  double internal_upsampling_radius() const
+  {
+    return parameters_.upsampling_radius ? normalization_.to_internal(*parameters_.upsampling_radius)
+                                         : DF_L1::internal::default_upsampling_radius(diagonal_, points_.size());
+  }
+  double internal_initial_voxel_size() const
+  {
+    return parameters_.initial_voxel_size ? normalization_.to_internal(*parameters_.initial_voxel_size)
+                                          : DF_L1::internal::default_initial_voxel_size(diagonal_);
+  }
   // h0 as set, or derived from the number of kept and added points (once upsampled)
-  double resolved_initial_support_radius() const
+  double internal_initial_support_radius() const
   {
     return parameters_.initial_support_radius
-             ? *parameters_.initial_support_radius
+             ? normalization_.to_internal(*parameters_.initial_support_radius)
              : DF_L1::internal::default_initial_support_radius(diagonal_, kept_points_.size() + added_points_.size());
+  }
+
+  // A result of the stages in input units, mapped on the first request.
+  template <class Result>
+  const Result& in_input_units(std::unique_ptr<Result>& cache, const Result& result) const
+  {
+    if(!cache)
+      cache = std::make_unique<Result>(normalization_.to_input(result));
+    return *cache;
   }
 
   // the outlier size as set, or derived from the grid (once voxelized)
@@ -563,6 +606,8 @@ private:
     return all;
   }
 
+  // The stages' frame, and the results they keep in it (input points included).
+  DF_L1::internal::Normalization normalization_;
   std::vector<Point> points_;
   double diagonal_ = 0, longest_side_ = 0; // of the points' bounding box
   double thickness_ = 0;                   // rms_distance_to_best_plane() of the points
@@ -582,6 +627,15 @@ private:
   std::unique_ptr<Sample_contraction> contraction_; // the contraction in progress
   std::unique_ptr<Contracted_samples> contracted_;  // its samples after the last stage run
   std::unique_ptr<Skeleton> skeleton_;
+
+  // The results in input units, as the getters return them (filled on request).
+  mutable std::unique_ptr<std::vector<Point>> input_points_;
+  std::unique_ptr<std::vector<Point>> kept_points_in_input_units_, added_points_in_input_units_;
+  std::unique_ptr<Voxel_grid> grid_in_input_units_;
+  std::unique_ptr<Distance_field> field_in_input_units_;
+  std::unique_ptr<Initial_skeleton> initial_in_input_units_;
+  std::unique_ptr<Contracted_samples> contracted_in_input_units_;
+  std::unique_ptr<Skeleton> skeleton_in_input_units_;
 };
 
 } // namespace CGAL

@@ -348,7 +348,12 @@ TEST_CASE("final skeleton: contract() runs one support-radius stage at a time", 
   std::vector<Kernel::Point_3> contracted_points = stepped.kept_points();
   contracted_points.insert(contracted_points.end(), stepped.added_points().begin(), stepped.added_points().end());
   const auto direct = CGAL::DF_L1::contract_samples(contracted_points, stepped.distance_field(), stepped.initial_skeleton());
-  CHECK(direct.points == a.points);
+  // the class works on the points divided by their diagonal and rounded to 2^-32 of it
+  REQUIRE(direct.points.size() == a.points.size());
+  double moved = 0;
+  for(std::size_t i = 0; i < a.points.size(); ++i)
+    moved = (std::max)(moved, std::sqrt(CGAL::squared_distance(direct.points[i], a.points[i])));
+  CHECK(moved <= 1e-9 * stepped.bbox_diagonal());
 
   // a contraction parameter restarts the contraction from its first stage
   stepped.set_repulsion_coefficient(0.3);

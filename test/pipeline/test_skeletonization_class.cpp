@@ -106,3 +106,76 @@ TEST_CASE("skeletonization class: bad input and parameters throw Invalid_input",
   CHECK_THROWS_AS(s.set_upsampling_radius(0), DF::Invalid_input);
   CHECK_THROWS_AS(s.set_outlier_component_size(-1), DF::Invalid_input);
 }
+
+namespace {
+
+// The final skeleton of `points` scaled by `scale` and moved by `offset`, mapped back.
+DF::Skeleton_graph<Kernel> unscaled_skeleton(const std::vector<Point_3>& points, double scale, double offset)
+{
+  std::vector<Point_3> moved;
+  for(const Point_3& p : points)
+    moved.emplace_back(scale * p.x() + offset, scale * p.y() + offset, scale * p.z() + offset);
+  Skeletonization s(moved, CGAL::parameters::number_of_samples(500));
+  DF::Skeleton_graph<Kernel> skeleton = s.skeleton();
+  for(auto v : CGAL::make_range(boost::vertices(skeleton)))
+  {
+    const Point_3& p = skeleton[v].point;
+    skeleton[v].point = Point_3((p.x() - offset) / scale, (p.y() - offset) / scale, (p.z() - offset) / scale);
+    skeleton[v].radius /= scale;
+  }
+  return skeleton;
+}
+
+} // namespace
+
+TEST_CASE("skeletonization class: numbers of any magnitude give the scaled skeleton", "[class][scale]")
+{
+  const std::vector<Point_3> points =
+    DF_L1_test::make_sample(DF_L1_test::shape_by_name("y_junction"), DF_L1_test::Variant::noise, 3000, 5).points;
+  const DF::Skeleton_graph<Kernel> reference = unscaled_skeleton(points, 1, 0);
+  REQUIRE(boost::num_vertices(reference) > 3);
+  const double diagonal = Skeletonization(points).bbox_diagonal();
+  // Powers of two scale exactly: the same skeleton bit for bit. Other factors round the
+  // input once, which may move a vertex by a rounding error only.
+  for(const double scale : {std::ldexp(1.0, -1000), std::ldexp(1.0, 1000), 1e-300, 1e-150, 1e-9, 1e9, 1e150, 1e300})
+  {
+    INFO("scale " << scale);
+    const DF::Skeleton_graph<Kernel> skeleton = unscaled_skeleton(points, scale, 0);
+    REQUIRE(boost::num_vertices(skeleton) == boost::num_vertices(reference));
+    REQUIRE(boost::num_edges(skeleton) == boost::num_edges(reference));
+    int exponent = 0;
+    const double tolerance = std::frexp(scale, &exponent) == 0.5 ? 0.0 : 1e-9 * diagonal;
+    double worst = 0;
+    for(std::size_t v = 0; v < boost::num_vertices(reference); ++v)
+    {
+      worst = (std::max)(worst, std::sqrt(CGAL::squared_distance(skeleton[v].point, reference[v].point)));
+      worst = (std::max)(worst, std::abs(skeleton[v].radius - reference[v].radius));
+      CHECK(skeleton[v].points == reference[v].points);
+    }
+    CHECK(worst <= tolerance);
+  }
+  // Far from the origin (coordinates of a map projection), the differences keep their bits.
+  const DF::Skeleton_graph<Kernel> far = unscaled_skeleton(points, 1, 5e6);
+  CHECK(DF::skeleton_statistics(far).cycles == DF::skeleton_statistics(reference).cycles);
+  CHECK(DF::skeleton_statistics(far).end_points == DF::skeleton_statistics(reference).end_points);
+}
+
+TEST_CASE("skeletonization class: extents beyond a double are refused; stage functions name their range", "[class][scale][errors]")
+{
+  const std::vector<Point_3> huge = {Point_3(-1e308, 0, 0), Point_3(1e308, 0, 0), Point_3(0, 1e307, 0),
+                                     Point_3(0, 0, 1e307)};
+  CHECK_THROWS_WITH(Skeletonization(huge), Catch::Contains("beyond the largest double"));
+  std::vector<Point_3> tiny;
+  for(const Point_3& p : DF_L1_test::make_sample(DF_L1_test::shape_by_name("capsule"), DF_L1_test::Variant::clean, 500, 1).points)
+    tiny.emplace_back(1e-300 * p.x(), 1e-300 * p.y(), 1e-300 * p.z());
+  CHECK_THROWS_WITH(DF::voxelize_point_set(tiny), Catch::Contains("DF_L1_skeletonization"));
+  CHECK_NOTHROW(Skeletonization(tiny).voxel_grid());
+  const Skeletonization on_tiny(tiny);
+  REQUIRE(on_tiny.input_points().size() == tiny.size());
+  for(std::size_t i = 0; i < tiny.size(); ++i)
+    CHECK(CGAL::squared_distance(on_tiny.input_points()[i], tiny[i]) <= CGAL::square(1e-9 * on_tiny.bbox_diagonal()));
+  std::vector<Point_3> subnormal; // subnormal: too few bits between the points
+  for(const Point_3& p : tiny)
+    subnormal.emplace_back(1e-10 * p.x(), 1e-10 * p.y(), 1e-10 * p.z());
+  CHECK_THROWS_WITH(Skeletonization(subnormal), Catch::Contains("smallest normal double") && Catch::Contains("cannot be represented"));
+}

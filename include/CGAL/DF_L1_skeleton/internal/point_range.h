@@ -9,9 +9,11 @@
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/property_map.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -19,10 +21,16 @@ namespace CGAL {
 namespace DF_L1 {
 namespace internal {
 
+// The extent of the points the stage functions take: products of three lengths stay
+// normal doubles. The class normalizes the points first, so it works at any scale.
+constexpr double smallest_stage_extent = 1e-100;
+constexpr double largest_stage_extent = 1e100;
+
 // Every stage starts here: a clear exception for the inputs that would otherwise
-// give NaN or a degenerate grid further down.
+// give NaN or a degenerate grid further down. With `any_scale`, the extent is not checked
+// (the caller normalizes the points).
 template <class PointRange, class PointMap>
-CGAL::Bbox_3 checked_bbox(const PointRange& points, PointMap point_map, const char* stage)
+CGAL::Bbox_3 checked_bbox(const PointRange& points, PointMap point_map, const char* stage, bool any_scale = false)
 {
   CGAL::Bbox_3 box;
   std::size_t n = 0;
@@ -38,6 +46,16 @@ CGAL::Bbox_3 checked_bbox(const PointRange& points, PointMap point_map, const ch
   }
   if(n == 0)
     throw Invalid_input(std::string(stage) + ": the point set is empty");
+  const double extent = (std::max)({box.xmax() - box.xmin(), box.ymax() - box.ymin(), box.zmax() - box.zmin()});
+  if(!any_scale && extent > 0 && !(extent >= smallest_stage_extent && extent <= largest_stage_extent))
+  {
+    std::ostringstream out;
+    out.precision(3);
+    out << stage << ": the points extend over " << extent
+        << ", outside [1e-100, 1e100], the scales the stage functions compute at; "
+           "DF_L1_skeletonization and extract_df_l1_skeleton() work at any scale";
+    throw Invalid_input(out.str());
+  }
   return box;
 }
 
