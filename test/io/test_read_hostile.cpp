@@ -13,6 +13,7 @@
 #include <catch2/catch.hpp>
 
 #include <sys/resource.h>
+#include <sys/stat.h>
 
 #include <atomic>
 #include <cmath>
@@ -26,6 +27,7 @@
 #include <random>
 #include <sstream>
 #include <string>
+#include <thread>
 #include <vector>
 
 namespace {
@@ -60,6 +62,7 @@ public:
   Temp_dir(const Temp_dir&) = delete;
   Temp_dir& operator=(const Temp_dir&) = delete;
 
+  std::string path(const std::string& name) const { return (path_ / name).string(); }
   std::string write(const std::string& name, const std::string& content) const
   {
     const fs::path p = path_ / name;
@@ -398,4 +401,22 @@ TEST_CASE("hostile: the file and stream readers agree", "[io][read]")
   CHECK(from_file.points == from_string.points);
   CHECK(from_file.normals.size() == 50000);
   CHECK(from_file.normals == from_stream.normals);
+}
+
+TEST_CASE("hostile: a FIFO is read as a stream, an empty file gives no points", "[io][read]")
+{
+  Temp_dir dir;
+  const std::string fifo = dir.path("pipe.xyz");
+  REQUIRE(::mkfifo(fifo.c_str(), 0600) == 0);
+  std::thread writer([&fifo] {
+    std::ofstream out(fifo, std::ios::binary);
+    for(int i = 0; i < 20000; ++i)
+      out << i << " 0.5 -1\n";
+  });
+  const Cloud pc = CGAL::DF_L1::read_point_cloud<K>(fifo);
+  writer.join();
+  REQUIRE(pc.points.size() == 20000);
+  CHECK(pc.points.back().x() == 19999);
+  require_error(dir.write("empty.xyz", ""), {"no points"});
+  require_error(dir.write("empty.ply", ""), {"empty file"});
 }

@@ -83,11 +83,8 @@ public:
   bool map_file(int fd, std::size_t size)
   {
 #ifdef CGAL_DF_L1_HAS_MMAP
-    if(size == 0) {
-      data_ = "";
-      size_ = 0;
-      return true;
-    }
+    if(size == 0)
+      return false; // mmap refuses empty mappings
     void* p = ::mmap(nullptr, size, PROT_READ, MAP_PRIVATE, fd, 0);
     if(p == MAP_FAILED)
       return false;
@@ -210,7 +207,8 @@ inline bool map_regular_file(const std::string& filename, Input_buffer& out, int
   }
   struct stat st;
   bool mapped = false;
-  if(::fstat(fd, &st) == 0 && S_ISREG(st.st_mode) && st.st_size >= 0 &&
+  // Size 0 is left to the stream path: files of /proc say 0 yet have content.
+  if(::fstat(fd, &st) == 0 && S_ISREG(st.st_mode) && st.st_size > 0 &&
      static_cast<std::uint64_t>(st.st_size) <= static_cast<std::uint64_t>(SIZE_MAX))
     mapped = out.map_file(fd, static_cast<std::size_t>(st.st_size));
   ::close(fd); // a mapping outlives its descriptor
