@@ -420,3 +420,48 @@ TEST_CASE("hostile: a FIFO is read as a stream, an empty file gives no points", 
   require_error(dir.write("empty.xyz", ""), {"no points"});
   require_error(dir.write("empty.ply", ""), {"empty file"});
 }
+
+TEST_CASE("hostile: line ends are found the same across the search windows", "[io][read]")
+{
+  // Long stretches without '\r' (beyond the 64 KiB search window), lone CRs, CR LF
+  // and LF, split by Line_reader and by the plain rule.
+  std::mt19937 rng(11);
+  std::string data;
+  while(data.size() < 600000) {
+    const int kind = static_cast<int>(rng() % 6);
+    if(kind == 0)
+      data += std::string(1000 + rng() % 150000, 'a') + "\n";
+    else if(kind == 1)
+      data += "\r";
+    else if(kind == 2)
+      data += "\r\n";
+    else if(kind == 3)
+      data += "xy\r\r\n";
+    else
+      data += std::string(rng() % 70, 'b') + (rng() % 2 ? "\n" : "\r");
+  }
+  data += "tail";
+  std::vector<std::string> expected;
+  {
+    std::string current;
+    for(std::size_t i = 0; i < data.size(); ++i) {
+      const char c = data[i];
+      if(c == '\n' || c == '\r') {
+        if(c == '\r' && i + 1 < data.size() && data[i + 1] == '\n')
+          ++i;
+        expected.push_back(current);
+        current.clear();
+      } else {
+        current += c;
+      }
+    }
+    if(!current.empty())
+      expected.push_back(current);
+  }
+  reader::Line_reader lines(data, 0, 1, true);
+  std::vector<std::string> got;
+  for(std::string_view line; lines.next(line);)
+    got.emplace_back(line);
+  REQUIRE(got.size() == expected.size());
+  CHECK(got == expected);
+}

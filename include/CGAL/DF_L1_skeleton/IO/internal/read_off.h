@@ -234,7 +234,7 @@ void parse_off(std::string_view buf, const std::string& name, Cloud& out,
   if(n == 0)
     fail(name, counts_where, "no points (the header says 0 vertices)");
 
-  reserve_elements(out.points, capped_reserve(n, max_text_points(buf, lines.position())));
+  reserve_elements(out.points, capped_reserve(n, text_points_bound(buf, lines.position())));
   bool normals_finite = true;
   // With an N keyword, the first vertex line decides: 6 or more values give the
   // normals, required on every vertex line; exactly 3 (x y z) mean the writer

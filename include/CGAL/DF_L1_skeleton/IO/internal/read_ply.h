@@ -414,7 +414,7 @@ void parse_ply_ascii(std::string_view buf, const Ply_header& h, std::size_t vert
   }
 
   const Ply_element& v = h.elements[vertex_index];
-  reserve_elements(out.points, capped_reserve(v.count, max_text_points(buf, lines.position())));
+  reserve_elements(out.points, capped_reserve(v.count, text_points_bound(buf, lines.position())));
   if(has_normals)
     reserve_elements(out.normals, out.points.capacity());
   bool normals_finite = true;

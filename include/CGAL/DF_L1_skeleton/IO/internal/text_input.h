@@ -76,9 +76,20 @@ public:
     if(len > 0 && begin[len - 1] == '\r')
       --len; // "\r\n"
     if(lone_cr_) {
-      const void* cr = std::memchr(begin, '\r', len);
-      if(cr != nullptr) { // the line ends at a lone "\r"
-        len = static_cast<std::size_t>(static_cast<const char*>(cr) - begin);
+      // The next '\r' is searched for by windows of 64 KiB and remembered: a
+      // file without any costs a search per window rather than one per line,
+      // and no search runs far ahead of the parser through a mapped file.
+      // Invariant: no '\r' in [begin, next_cr_) when next_cr_ >= begin.
+      const char* const line_end = begin + len;
+      while(next_cr_ < begin || (!next_cr_is_cr_ && next_cr_ < line_end)) {
+        const char* const from = std::max(next_cr_, begin);
+        const char* const window_end = from + std::min<std::size_t>(static_cast<std::size_t>(end - from), cr_window);
+        const void* cr = std::memchr(from, '\r', static_cast<std::size_t>(window_end - from));
+        next_cr_ = cr != nullptr ? static_cast<const char*>(cr) : window_end;
+        next_cr_is_cr_ = cr != nullptr;
+      }
+      if(next_cr_is_cr_ && next_cr_ < line_end) { // the line ends at a lone "\r"
+        len = static_cast<std::size_t>(next_cr_ - begin);
         consumed = len + 1;
       }
     }
@@ -106,6 +117,9 @@ private:
   const Input_buffer* input_;
   std::size_t next_drop_;
   const char* newline_ = nullptr; // next '\n' at or after pos_, or the end
+  static constexpr std::size_t cr_window = std::size_t(1) << 16;
+  const char* next_cr_ = buf_.data() + pos_; // see next()
+  bool next_cr_is_cr_ = false;
 };
 
 /// Whitespace-separated tokens of one line.
@@ -205,6 +219,14 @@ void reserve_elements(Vector& v, std::size_t n)
   if(last > first)
     ::madvise(reinterpret_cast<void*>(first), last - first, MADV_HUGEPAGE);
 #endif
+}
+
+/// The most points the text from `start` on can hold: one per 6 bytes (the
+/// shortest point line is "1 2 3\n"). Caps a count announced by a header, which
+/// is then reserved exactly when it is honest.
+inline std::size_t text_points_bound(std::string_view buf, std::size_t start)
+{
+  return start >= buf.size() ? 0 : (buf.size() - start + 1) / 6 + 1;
 }
 
 /// Capacity to reserve for a count announced by a header: never more than the
