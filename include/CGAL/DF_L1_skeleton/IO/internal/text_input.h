@@ -201,24 +201,13 @@ inline std::size_t max_text_points(std::string_view buf, std::size_t start)
   return std::min(static_cast<std::size_t>(estimate), bound);
 }
 
-/// Reserves `n` elements in `v` and, on Linux, asks for transparent huge pages
-/// for them: filling 240 MB of points otherwise costs 60000 page faults, a
-/// tenth of the reading time of a large file. Only advice; harmless if refused.
+/// Reserves `n` elements in `v`, on huge pages where the system has them
+/// (filling 240 MB of points otherwise costs 60000 page faults).
 template <class Vector>
 void reserve_elements(Vector& v, std::size_t n)
 {
   v.reserve(n);
-#if defined(__linux__) && defined(MADV_HUGEPAGE)
-  constexpr std::size_t huge = std::size_t(2) << 20;
-  const std::size_t bytes = v.capacity() * sizeof(typename Vector::value_type);
-  if(bytes < 2 * huge)
-    return;
-  const std::uintptr_t begin = reinterpret_cast<std::uintptr_t>(v.data());
-  const std::uintptr_t first = (begin + huge - 1) / huge * huge;
-  const std::uintptr_t last = (begin + bytes) / huge * huge;
-  if(last > first)
-    ::madvise(reinterpret_cast<void*>(first), last - first, MADV_HUGEPAGE);
-#endif
+  advise_huge_pages(v.data(), v.capacity() * sizeof(typename Vector::value_type));
 }
 
 /// The most points the text from `start` on can hold: one per 6 bytes (the
