@@ -69,7 +69,7 @@ for format in "${formats[@]}"; do
     # Real scans (only their first max_len bytes matter); not copied into the corpus.
     shared_seeds="$build/shared_seeds/$format"
     mkdir -p "$shared_seeds"
-    find "$shared" -maxdepth 2 -type f | grep -Ei "$pattern" | while read -r f; do
+    { find "$shared" -maxdepth 2 -type f | grep -Ei "$pattern" || true; } | while read -r f; do
       head -c 65536 "$f" >"$shared_seeds/$(basename "$f")"
     done
     extra=("$shared_seeds")
