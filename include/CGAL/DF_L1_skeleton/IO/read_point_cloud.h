@@ -7,8 +7,9 @@
 /// Robust readers for point clouds stored as XYZ/PTS/TXT, PLY or OFF files.
 ///
 /// All readers share these rules:
-/// - The input is read once into memory and parsed from there; files are
-///   opened read-only and never modified.
+/// - The input is parsed from memory: a regular file is mapped read-only (on
+///   POSIX systems; read otherwise), a stream is read to its end first. Files
+///   are opened read-only and never modified.
 /// - Every failure throws `CGAL::DF_L1::Read_error` with a one-line message
 ///   that starts with the file name and, where it applies, names the line
 ///   (`"bunny.xyz: line 12: expected a number, got 'abc'"`) or the vertex
@@ -26,6 +27,7 @@
 ///   mark are accepted in text data.
 
 #include <CGAL/DF_L1_skeleton/errors.h>
+#include <CGAL/DF_L1_skeleton/IO/internal/input_buffer.h>
 #include <CGAL/DF_L1_skeleton/IO/internal/read_off.h>
 #include <CGAL/DF_L1_skeleton/IO/internal/read_ply.h>
 #include <CGAL/DF_L1_skeleton/IO/internal/read_xyz.h>
@@ -75,8 +77,9 @@ inline std::string lower_case_extension(const std::string& filename)
   return ext;
 }
 
-/// The whole content of a regular file, opened read-only.
-inline std::string read_file(const std::string& filename)
+/// The content of a file, opened read-only: mapped when it is a regular file
+/// (see input_buffer.h), else read as a stream (a FIFO, say).
+inline Input_buffer read_file(const std::string& filename)
 {
   namespace fs = std::filesystem;
   std::error_code ec;
@@ -85,20 +88,18 @@ inline std::string read_file(const std::string& filename)
     fail(filename, "", "cannot open file: no such file");
   if(st.type() == fs::file_type::directory)
     fail(filename, "", "cannot open file: it is a directory");
+  Input_buffer mapped;
+  int open_errno = 0;
+  if(map_regular_file(filename, mapped, open_errno))
+    return mapped;
   errno = 0;
   std::ifstream in(filename, std::ios::in | std::ios::binary);
   if(!in.is_open()) {
-    const int err = errno;
+    const int err = open_errno != 0 ? open_errno : errno;
     fail(filename, "", std::string("cannot open file") +
                            (err != 0 ? std::string(": ") + std::strerror(err) : std::string()));
   }
-  std::uint64_t size_hint = 0;
-  if(st.type() == fs::file_type::regular) {
-    const std::uintmax_t size = fs::file_size(filename, ec);
-    if(!ec)
-      size_hint = size;
-  }
-  return read_stream(in, filename, size_hint);
+  return read_stream(in, filename);
 }
 
 } // namespace point_cloud_reader
@@ -134,9 +135,9 @@ template <class Kernel>
 Point_cloud<Kernel> read_xyz_point_cloud(std::istream& in, const std::string& name_for_messages)
 {
   namespace reader = internal::point_cloud_reader;
-  const std::string data = reader::read_stream(in, name_for_messages);
+  const reader::Input_buffer data = reader::read_stream(in, name_for_messages);
   Point_cloud<Kernel> pc;
-  reader::parse_xyz(data, name_for_messages, pc);
+  reader::parse_xyz(data.view(), name_for_messages, pc, &data);
   return pc;
 }
 
@@ -169,9 +170,9 @@ template <class Kernel>
 Point_cloud<Kernel> read_ply_point_cloud(std::istream& in, const std::string& name_for_messages)
 {
   namespace reader = internal::point_cloud_reader;
-  const std::string data = reader::read_stream(in, name_for_messages);
+  const reader::Input_buffer data = reader::read_stream(in, name_for_messages);
   Point_cloud<Kernel> pc;
-  reader::parse_ply(data, name_for_messages, pc);
+  reader::parse_ply(data.view(), name_for_messages, pc, &data);
   return pc;
 }
 
@@ -216,9 +217,9 @@ template <class Kernel>
 Point_cloud<Kernel> read_off_point_cloud(std::istream& in, const std::string& name_for_messages)
 {
   namespace reader = internal::point_cloud_reader;
-  const std::string data = reader::read_stream(in, name_for_messages);
+  const reader::Input_buffer data = reader::read_stream(in, name_for_messages);
   Point_cloud<Kernel> pc;
-  reader::parse_off(data, name_for_messages, pc);
+  reader::parse_off(data.view(), name_for_messages, pc, &data);
   return pc;
 }
 
@@ -244,14 +245,14 @@ Point_cloud<Kernel> read_point_cloud(const std::string& filename)
     reader::fail(filename, "",
                  "unsupported file extension " + reader::quote_token(ext) +
                      " (expected .xyz, .pts, .txt, .ply or .off)");
-  const std::string data = reader::read_file(filename);
+  const reader::Input_buffer data = reader::read_file(filename);
   Point_cloud<Kernel> pc;
   if(is_xyz)
-    reader::parse_xyz(data, filename, pc);
+    reader::parse_xyz(data.view(), filename, pc, &data);
   else if(ext == ".ply")
-    reader::parse_ply(data, filename, pc);
+    reader::parse_ply(data.view(), filename, pc, &data);
   else
-    reader::parse_off(data, filename, pc);
+    reader::parse_off(data.view(), filename, pc, &data);
   return pc;
 }
 

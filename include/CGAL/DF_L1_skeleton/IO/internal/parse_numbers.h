@@ -10,6 +10,7 @@
 /// public API.
 
 #include <CGAL/DF_L1_skeleton/IO/internal/reader_messages.h>
+#include <CGAL/DF_L1_skeleton/IO/internal/text_input.h>
 
 #include <algorithm>
 #include <array>
@@ -178,6 +179,47 @@ std::array<double, 3> parse_coordinates(const std::string_view* tok, const std::
       fail(name, where(), "coordinate is not finite: " + quote_token(tok[i]));
   }
   return c;
+}
+
+/// The fast path of the text formats, for a line of finite numbers separated
+/// by spaces and tabs: parses the first three tokens of `line` as coordinates
+/// straight from the buffer (no tokenizing pass) and fills `t` with the tokens
+/// of the whole line as `Line_tokens(strip_comment(line))` would. Returns false
+/// on anything else (a '+' sign, a comment or a '\r' among the first three
+/// tokens, a bad or non-finite number, fewer than three tokens...): the caller
+/// then takes the general path, which gives the same values or the error.
+/// The values are those of `parse_double`: `std::from_chars` on the same
+/// characters, since a token here ends at a space, a tab or the line's end.
+template <std::size_t max_tokens>
+bool fast_coordinates(std::string_view line, std::array<double, 3>& c, Line_tokens<max_tokens>& t)
+{
+#ifdef CGAL_DF_L1_HAS_FLOAT_FROM_CHARS
+  static_assert(max_tokens > 3, "the line's width is counted past the coordinates");
+  const char* p = line.data();
+  const char* const end = p + line.size();
+  for(std::size_t i = 0; i < 3; ++i) {
+    while(p != end && (*p == ' ' || *p == '\t'))
+      ++p;
+    if(p == end || *p == '+')
+      return false;
+    const std::from_chars_result r = std::from_chars(p, end, c[i], std::chars_format::general);
+    if(r.ec != std::errc() || (r.ptr != end && *r.ptr != ' ' && *r.ptr != '\t') || !std::isfinite(c[i]))
+      return false;
+    t.tok[i] = std::string_view(p, static_cast<std::size_t>(r.ptr - p));
+    p = r.ptr;
+  }
+  // The rest of the line, up to a comment, gives the other columns.
+  t.size = 3;
+  Token_reader rest(strip_comment(std::string_view(p, static_cast<std::size_t>(end - p))));
+  while(t.size < max_tokens && rest.next(t.tok[t.size]))
+    ++t.size;
+  return true;
+#else
+  (void)line;
+  (void)c;
+  (void)t;
+  return false;
+#endif
 }
 
 /// Parses three normal tokens. Returns the status of the first bad token and

@@ -32,11 +32,13 @@ namespace point_cloud_reader {
 /// Appends the point of an OFF vertex line (its first three tokens) and, with
 /// `with_normal`, the normal of the next three; a bad number is an error at `where()`,
 /// a non-finite normal clears `normals_finite`.
+/// `parsed`, when not null, holds the point already parsed by `fast_coordinates()`.
 template <class Cloud, class Where>
 void append_off_vertex(Cloud& out, const std::string_view* tok, bool with_normal, bool& normals_finite,
-                       const std::string& name, const Where& where)
+                       const std::string& name, const Where& where,
+                       const std::array<double, 3>* parsed = nullptr)
 {
-  append(out.points, parse_coordinates(tok, name, where));
+  append(out.points, parsed != nullptr ? *parsed : parse_coordinates(tok, name, where));
   if(!with_normal)
     return;
   std::array<double, 3> nv;
@@ -84,7 +86,7 @@ template <class Cloud>
 void parse_headerless_off(std::string_view buf, Line_reader& lines, std::string_view line,
                           const std::string& name, Cloud& out)
 {
-  out.points.reserve(max_text_points(buf, lines.position()) + 1);
+  reserve_elements(out.points, max_text_points(buf, lines.position()) + 1);
   std::size_t columns = 0; // 3 or 6, from the first line
   std::size_t first_line = 0;
   bool normals_finite = true;
@@ -105,7 +107,7 @@ void parse_headerless_off(std::string_view buf, Line_reader& lines, std::string_
       columns = t.size;
       first_line = lines.line_number();
       if(columns == 6)
-        out.normals.reserve(out.points.capacity());
+        reserve_elements(out.normals, out.points.capacity());
     } else if(t.size != columns) {
       if(t.size < 3)
         for(std::size_t i = 0; i < t.size; ++i) { // a non-number says more than the count
@@ -127,11 +129,14 @@ void parse_headerless_off(std::string_view buf, Line_reader& lines, std::string_
     out.normals.clear();
 }
 
+/// Parses `buf`; `input`, when given, is the buffer `buf` views (its pages are
+/// dropped as parsing advances).
 template <class Cloud>
-void parse_off(std::string_view buf, const std::string& name, Cloud& out)
+void parse_off(std::string_view buf, const std::string& name, Cloud& out,
+               const Input_buffer* input = nullptr)
 {
   const std::size_t start = skip_bom(buf);
-  Line_reader lines(buf, start, 1, true);
+  Line_reader lines(buf, start, 1, true, input);
   std::string_view line;
   if(!next_content_line(lines, line))
     fail(name, "", "empty file (expected an 'OFF' header line)");
@@ -229,7 +234,7 @@ void parse_off(std::string_view buf, const std::string& name, Cloud& out)
   if(n == 0)
     fail(name, counts_where, "no points (the header says 0 vertices)");
 
-  out.points.reserve(capped_reserve(n, max_text_points(buf, lines.position())));
+  reserve_elements(out.points, capped_reserve(n, text_points_bound(buf, lines.position())));
   bool normals_finite = true;
   // With an N keyword, the first vertex line decides: 6 or more values give the
   // normals, required on every vertex line; exactly 3 (x y z) mean the writer
@@ -243,14 +248,18 @@ void parse_off(std::string_view buf, const std::string& name, Cloud& out)
     const auto where = [&] {
       return vertex_where(static_cast<std::size_t>(i), n, lines.line_number());
     };
-    const Line_tokens<6> t(line);
+    Line_tokens<6> t;
+    std::array<double, 3> c;
+    const bool fast = fast_coordinates(line, c, t);
+    if(!fast)
+      t = Line_tokens<6>(line);
     if(t.size < 3)
       fail_short_line(t.tok.data(), t.size, name, where(), "at least 3 numbers (x y z)");
     if(has_normals && i == 0) {
       first_vertex_line = lines.line_number();
       read_normals = t.size != 3;
       if(read_normals)
-        out.normals.reserve(out.points.capacity());
+        reserve_elements(out.normals, out.points.capacity());
     }
     if(read_normals && t.size < 6)
       fail(name, where(),
@@ -262,7 +271,8 @@ void parse_off(std::string_view buf, const std::string& name, Cloud& out)
                ", the first vertex line (the keyword " + quote_token(keyword) +
                " announces normals but that line has none), got " +
                (t.size == 6 ? std::string("6 or more") : std::to_string(t.size)));
-    append_off_vertex(out, t.tok.data(), read_normals, normals_finite, name, where);
+    append_off_vertex(out, t.tok.data(), read_normals, normals_finite, name, where,
+                      fast ? &c : nullptr);
   }
   // Faces and anything after them are not read.
   if(!normals_finite)

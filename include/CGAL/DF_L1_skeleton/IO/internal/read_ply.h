@@ -239,6 +239,7 @@ public:
     : buf_(buf), pos_(pos), swap_(swap) {}
 
   std::size_t remaining() const { return buf_.size() - pos_; }
+  std::size_t position() const { return pos_; }
   bool swap() const { return swap_; }
 
   /// Advances by `n` bytes if there are that many.
@@ -317,7 +318,7 @@ void append_ply_vertex(Cloud& out, const double (&values)[6], bool has_normals, 
 template <class Cloud>
 void parse_ply_binary(std::string_view buf, const Ply_header& h, std::size_t vertex_index,
                       const std::vector<int>& roles, bool has_normals, const std::string& name,
-                      Cloud& out)
+                      Cloud& out, const Input_buffer* input)
 {
   const bool file_little = h.format == Ply_format::binary_little_endian;
   Ply_binary_cursor c(buf, h.data_offset, file_little != host_is_little_endian());
@@ -358,12 +359,17 @@ void parse_ply_binary(std::string_view buf, const Ply_header& h, std::size_t ver
   std::uint64_t min_size = 0;
   for(const Ply_property& p : v.properties)
     min_size += ply_type_size(p.is_list ? p.count_type : p.type);
-  out.points.reserve(capped_reserve(v.count, c.remaining() / std::max<std::uint64_t>(min_size, 1)));
+  reserve_elements(out.points, capped_reserve(v.count, c.remaining() / std::max<std::uint64_t>(min_size, 1)));
   if(has_normals)
-    out.normals.reserve(out.points.capacity());
+    reserve_elements(out.normals, out.points.capacity());
   bool normals_finite = true;
 
+  std::size_t next_drop = c.position() + Line_reader::drop_interval;
   for(std::uint64_t i = 0; i < v.count; ++i) {
+    if(input != nullptr && c.position() >= next_drop) {
+      input->drop_pages_before(c.position());
+      next_drop = c.position() + Line_reader::drop_interval;
+    }
     double values[6] = {0, 0, 0, 0, 0, 0};
     std::string bad_list;
     const Ply_walk w = ply_walk_binary(c, v, roles.data(), values, &bad_list);
@@ -384,11 +390,11 @@ void parse_ply_binary(std::string_view buf, const Ply_header& h, std::size_t ver
 template <class Cloud>
 void parse_ply_ascii(std::string_view buf, const Ply_header& h, std::size_t vertex_index,
                      const std::vector<int>& roles, bool has_normals, const std::string& name,
-                     Cloud& out)
+                     Cloud& out, const Input_buffer* input)
 {
   // One element instance per line, as every writer does; this lets a line with
   // too many or too few values be reported instead of shifting all that follows.
-  Line_reader lines(buf, h.data_offset, h.next_line, true);
+  Line_reader lines(buf, h.data_offset, h.next_line, true, input);
   auto next_nonblank = [&](std::string_view& line) {
     while(lines.next(line))
       for(char ch : line)
@@ -408,9 +414,9 @@ void parse_ply_ascii(std::string_view buf, const Ply_header& h, std::size_t vert
   }
 
   const Ply_element& v = h.elements[vertex_index];
-  out.points.reserve(capped_reserve(v.count, max_text_points(buf, lines.position())));
+  reserve_elements(out.points, capped_reserve(v.count, text_points_bound(buf, lines.position())));
   if(has_normals)
-    out.normals.reserve(out.points.capacity());
+    reserve_elements(out.normals, out.points.capacity());
   bool normals_finite = true;
 
   for(std::uint64_t i = 0; i < v.count; ++i) {
@@ -456,8 +462,11 @@ void parse_ply_ascii(std::string_view buf, const Ply_header& h, std::size_t vert
     out.normals.clear();
 }
 
+/// Parses `buf`; `input`, when given, is the buffer `buf` views (its pages are
+/// dropped as parsing advances).
 template <class Cloud>
-void parse_ply(std::string_view buf, const std::string& name, Cloud& out)
+void parse_ply(std::string_view buf, const std::string& name, Cloud& out,
+               const Input_buffer* input = nullptr)
 {
   const Ply_header h = parse_ply_header(buf, name);
   std::size_t vertex_index = h.elements.size();
@@ -475,9 +484,9 @@ void parse_ply(std::string_view buf, const std::string& name, Cloud& out)
   if(h.elements[vertex_index].count == 0)
     fail(name, "", "no points (the header says 0 vertices)");
   if(h.format == Ply_format::ascii)
-    parse_ply_ascii(buf, h, vertex_index, roles, has_normals, name, out);
+    parse_ply_ascii(buf, h, vertex_index, roles, has_normals, name, out, input);
   else
-    parse_ply_binary(buf, h, vertex_index, roles, has_normals, name, out);
+    parse_ply_binary(buf, h, vertex_index, roles, has_normals, name, out, input);
 }
 
 } // namespace point_cloud_reader

@@ -27,12 +27,15 @@ namespace DF_L1 {
 namespace internal {
 namespace point_cloud_reader {
 
+/// Parses `buf`; `input`, when given, is the buffer `buf` views (its pages are
+/// dropped as parsing advances).
 template <class Cloud>
-void parse_xyz(std::string_view buf, const std::string& name, Cloud& out)
+void parse_xyz(std::string_view buf, const std::string& name, Cloud& out,
+               const Input_buffer* input = nullptr)
 {
   const std::size_t start = skip_bom(buf);
-  out.points.reserve(max_text_points(buf, start));
-  Line_reader lines(buf, start, 1, true);
+  reserve_elements(out.points, max_text_points(buf, start));
+  Line_reader lines(buf, start, 1, true, input);
 
   bool first_content_line = true;
   bool six_columns_everywhere = true; // normals are kept only while this holds
@@ -41,21 +44,25 @@ void parse_xyz(std::string_view buf, const std::string& name, Cloud& out)
 
   std::string_view line;
   while(lines.next(line)) {
-    const Line_tokens<7> t(strip_comment(line));
-    if(t.size == 0)
-      continue;
-    std::uint64_t unused_count;
-    if(first_content_line && t.size == 1 && parse_count(t.tok[0], unused_count)) {
-      // The count line of .pts files. The count is not trusted: the points read are the truth.
-      first_content_line = false;
-      continue;
-    }
-    first_content_line = false;
-
     const auto where = [&lines] { return line_where(lines.line_number()); };
-    if(t.size < 3)
-      fail_short_line(t.tok.data(), t.size, name, where(), "at least 3 numbers (x y z)");
-    append(out.points, parse_coordinates(t.tok.data(), name, where));
+    Line_tokens<7> t;
+    std::array<double, 3> c;
+    if(first_content_line || !fast_coordinates(line, c, t)) {
+      t = Line_tokens<7>(strip_comment(line));
+      if(t.size == 0)
+        continue;
+      std::uint64_t unused_count;
+      if(first_content_line && t.size == 1 && parse_count(t.tok[0], unused_count)) {
+        // The count line of .pts files. The count is not trusted: the points read are the truth.
+        first_content_line = false;
+        continue;
+      }
+      first_content_line = false;
+      if(t.size < 3)
+        fail_short_line(t.tok.data(), t.size, name, where(), "at least 3 numbers (x y z)");
+      c = parse_coordinates(t.tok.data(), name, where);
+    }
+    append(out.points, c);
 
     if(!six_columns_everywhere)
       continue;
@@ -76,7 +83,7 @@ void parse_xyz(std::string_view buf, const std::string& name, Cloud& out)
     }
     normals_finite = normals_finite && finite;
     if(out.normals.empty())
-      out.normals.reserve(out.points.capacity());
+      reserve_elements(out.normals, out.points.capacity());
     append(out.normals, n);
   }
 

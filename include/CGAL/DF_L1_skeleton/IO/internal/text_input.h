@@ -4,11 +4,12 @@
 #define CGAL_DF_L1_SKELETON_IO_INTERNAL_TEXT_INPUT_H
 
 /// \file text_input.h
-/// The input side shared by the point cloud readers: reading a whole stream
-/// into memory (the parsers work on that buffer, with no per-token stream
-/// extraction), iterating over its lines and tokens, and the helpers that keep
+/// The text side shared by the point cloud readers: iterating over the lines
+/// and tokens of an input held in memory (`Input_buffer`; the parsers work on
+/// the buffer, with no per-token stream extraction), and the helpers that keep
 /// reservations within what the data can hold. Not part of the public API.
 
+#include <CGAL/DF_L1_skeleton/IO/internal/input_buffer.h>
 #include <CGAL/DF_L1_skeleton/IO/internal/reader_messages.h>
 
 #include <algorithm>
@@ -28,36 +29,6 @@ namespace internal {
 namespace point_cloud_reader {
 
 // ---------------------------------------------------------------------------
-// Input
-// ---------------------------------------------------------------------------
-
-/// Reads everything left in `in`. `size_hint` (e.g. the file size) only
-/// pre-sizes the buffer; it is capped so that a wrong hint cannot cost memory.
-inline std::string read_stream(std::istream& in, const std::string& name,
-                               std::uint64_t size_hint = 0)
-{
-  if(!in)
-    fail(name, "", "cannot read (the stream is not in a good state)");
-  constexpr std::size_t chunk = std::size_t(1) << 16;
-  std::string data;
-  // + chunk: the last read asks for a full chunk past the expected end.
-  data.reserve(static_cast<std::size_t>(std::min<std::uint64_t>(size_hint, std::uint64_t(1) << 30)) +
-               chunk);
-  for(;;) {
-    const std::size_t old_size = data.size();
-    data.resize(old_size + chunk);
-    in.read(&data[old_size], static_cast<std::streamsize>(chunk));
-    const std::streamsize got = in.gcount();
-    data.resize(old_size + static_cast<std::size_t>(got));
-    if(!in)
-      break;
-  }
-  if(in.bad())
-    fail(name, "", "read error");
-  return data;
-}
-
-// ---------------------------------------------------------------------------
 // Lines and tokens
 // ---------------------------------------------------------------------------
 
@@ -71,13 +42,19 @@ inline bool is_blank(char c)
 /// "\n", "\r\n", or (when `lone_cr_ends_line`) a lone "\r" as written by old Mac
 /// tools. The PLY header disables the latter: binary data may follow
 /// "end_header\r" only through a "\n".
+/// With `input` (whose view must be `buffer`), the pages of a mapped file are
+/// dropped every few MB behind the current line.
 class Line_reader
 {
 public:
   Line_reader(std::string_view buffer, std::size_t start, std::size_t first_line_number,
-              bool lone_cr_ends_line)
-    : buf_(buffer), pos_(start), next_line_(first_line_number), lone_cr_(lone_cr_ends_line)
+              bool lone_cr_ends_line, const Input_buffer* input = nullptr)
+    : buf_(buffer), pos_(start), next_line_(first_line_number), lone_cr_(lone_cr_ends_line),
+      input_(input), next_drop_(start + drop_interval)
   {}
+
+  /// Bytes parsed between two calls of `Input_buffer::drop_pages_before()`.
+  static constexpr std::size_t drop_interval = std::size_t(8) << 20;
 
   /// Gets the next line, without its end-of-line characters.
   bool next(std::string_view& line)
@@ -99,13 +76,28 @@ public:
     if(len > 0 && begin[len - 1] == '\r')
       --len; // "\r\n"
     if(lone_cr_) {
-      const void* cr = std::memchr(begin, '\r', len);
-      if(cr != nullptr) { // the line ends at a lone "\r"
-        len = static_cast<std::size_t>(static_cast<const char*>(cr) - begin);
+      // The next '\r' is searched for by windows of 64 KiB and remembered: a
+      // file without any costs a search per window rather than one per line,
+      // and no search runs far ahead of the parser through a mapped file.
+      // Invariant: no '\r' in [begin, next_cr_) when next_cr_ >= begin.
+      const char* const line_end = begin + len;
+      while(next_cr_ < begin || (!next_cr_is_cr_ && next_cr_ < line_end)) {
+        const char* const from = std::max(next_cr_, begin);
+        const char* const window_end = from + std::min<std::size_t>(static_cast<std::size_t>(end - from), cr_window);
+        const void* cr = std::memchr(from, '\r', static_cast<std::size_t>(window_end - from));
+        next_cr_ = cr != nullptr ? static_cast<const char*>(cr) : window_end;
+        next_cr_is_cr_ = cr != nullptr;
+      }
+      if(next_cr_is_cr_ && next_cr_ < line_end) { // the line ends at a lone "\r"
+        len = static_cast<std::size_t>(next_cr_ - begin);
         consumed = len + 1;
       }
     }
     line = std::string_view(begin, len);
+    if(input_ != nullptr && pos_ >= next_drop_) {
+      input_->drop_pages_before(pos_);
+      next_drop_ = pos_ + drop_interval;
+    }
     pos_ += consumed;
     current_line_ = next_line_++;
     return true;
@@ -122,7 +114,12 @@ private:
   std::size_t next_line_;
   std::size_t current_line_ = 0;
   bool lone_cr_;
+  const Input_buffer* input_;
+  std::size_t next_drop_;
   const char* newline_ = nullptr; // next '\n' at or after pos_, or the end
+  static constexpr std::size_t cr_window = std::size_t(1) << 16;
+  const char* next_cr_ = buf_.data() + pos_; // see next()
+  bool next_cr_is_cr_ = false;
 };
 
 /// Whitespace-separated tokens of one line.
@@ -157,6 +154,7 @@ struct Line_tokens
   std::array<std::string_view, max_tokens> tok;
   std::size_t size = 0;
 
+  Line_tokens() = default;
   explicit Line_tokens(std::string_view line)
   {
     Token_reader reader(line);
@@ -180,17 +178,44 @@ inline std::size_t skip_bom(std::string_view buf)
   return (buf.size() >= 3 && buf.compare(0, 3, "\xEF\xBB\xBF") == 0) ? 3 : 0;
 }
 
-/// An upper bound on the number of points the text from `start` on can hold,
-/// to size reservations: one per line, and no more than one per 6 bytes (the
-/// shortest point line is "1 2 3\n"), so blank lines cannot inflate it.
+/// The number of points to reserve for the text from `start` on: one per line,
+/// and no more than one per 6 bytes (the shortest point line is "1 2 3\n"), so
+/// blank lines cannot inflate it. Beyond 16 MB the lines are not all counted
+/// (that pass would bring every page of a mapped file into memory at once): the
+/// count of the first 4 MB is extrapolated with a 2 % margin, and the vectors
+/// grow as usual should the rest of the file have shorter lines.
 inline std::size_t max_text_points(std::string_view buf, std::size_t start)
 {
   if(start >= buf.size())
     return 0;
-  const std::size_t lines =
-      static_cast<std::size_t>(std::count(buf.begin() + static_cast<std::ptrdiff_t>(start),
-                                          buf.end(), '\n')) + 1;
-  return std::min(lines, (buf.size() - start + 1) / 6 + 1);
+  const std::size_t bytes = buf.size() - start;
+  const std::size_t bound = (bytes + 1) / 6 + 1;
+  constexpr std::size_t exact_limit = std::size_t(16) << 20;
+  constexpr std::size_t sample = std::size_t(4) << 20;
+  const char* const first = buf.data() + start;
+  if(bytes <= exact_limit)
+    return std::min(static_cast<std::size_t>(std::count(first, first + bytes, '\n')) + 1, bound);
+  const double lines_per_byte =
+      static_cast<double>(std::count(first, first + sample, '\n')) / static_cast<double>(sample);
+  const double estimate = lines_per_byte * static_cast<double>(bytes) * 1.02 + 1024.0;
+  return std::min(static_cast<std::size_t>(estimate), bound);
+}
+
+/// Reserves `n` elements in `v`, on huge pages where the system has them
+/// (filling 240 MB of points otherwise costs 60000 page faults).
+template <class Vector>
+void reserve_elements(Vector& v, std::size_t n)
+{
+  v.reserve(n);
+  advise_huge_pages(v.data(), v.capacity() * sizeof(typename Vector::value_type));
+}
+
+/// The most points the text from `start` on can hold: one per 6 bytes (the
+/// shortest point line is "1 2 3\n"). Caps a count announced by a header, which
+/// is then reserved exactly when it is honest.
+inline std::size_t text_points_bound(std::string_view buf, std::size_t start)
+{
+  return start >= buf.size() ? 0 : (buf.size() - start + 1) / 6 + 1;
 }
 
 /// Capacity to reserve for a count announced by a header: never more than the
