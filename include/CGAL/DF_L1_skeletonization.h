@@ -115,9 +115,13 @@ public:
     const CGAL::Bbox_3 input_box = DF_L1::internal::checked_bbox(points, point_map, stage_name, true);
     normalization_ = DF_L1::internal::Normalization(input_box, stage_name);
     if(!(DF_L1::internal::longest_side(input_box) > 0))
-      throw DF_L1::Invalid_input(std::string(stage_name) + ": all " +
-                                 std::to_string(DF_L1::internal::range_size(points, point_map)) +
-                                 " points coincide; there is no shape to skeletonize");
+    {
+      const std::size_t n = DF_L1::internal::range_size(points, point_map);
+      throw DF_L1::Invalid_input(std::string(stage_name) +
+                                 (n == 1 ? std::string(": a single point")
+                                         : ": all " + std::to_string(n) + " points coincide") +
+                                 "; there is no shape to skeletonize");
+    }
     points_.reserve(DF_L1::internal::range_size(points, point_map));
     for(const auto& p : points)
       points_.push_back(normalization_.to_internal(get(point_map, p)));

@@ -303,7 +303,7 @@ std::vector<Case> corpus()
       {"usage_option.xyz", sph, 2, {"--no-such-option"}, "out.obj", "--no-such-option"},
       {"usage_resolution.xyz", sph, 2, {"voxel"}, "out.obj", "--voxel-resolution abc"},
       // Degenerate clouds, through the whole pipeline
-      {"one_point.xyz", "1 2 3\n", 1, {"coincide"}},
+      {"one_point.xyz", "1 2 3\n", 1, {"a single point"}},
       {"two_points.xyz", "0 0 0\n1 1 1\n", 1, {"no skeleton"}},
       {"three_points.xyz", three, 1, {"no skeleton", "plane"}},
       {"all_equal.xyz", all_equal, 1, {"coincide"}},
@@ -313,10 +313,13 @@ std::vector<Case> corpus()
        {"no skeleton", "plane"}},
       {"large_coordinates.xyz", sphere(n_sphere, 1e150), 0, {}},
       {"small_coordinates.xyz", sphere(n_sphere, 1e-150), 0, {}},
-      // Beyond about 1e±154 the squares of the plane test overflow or underflow: the
-      // cloud is refused as flat (a misleading reason, left to the scale normalization).
-      {"huge_coordinates.xyz", sphere(n_sphere, 1e300), 1, {"no skeleton"}},
-      {"tiny_coordinates.xyz", sphere(n_sphere, 1e-300), 1, {"no skeleton"}},
+      // The skeletonization works on coordinates divided by the diagonal: any magnitude
+      // a double holds gives the scaled skeleton, and what it cannot hold is named.
+      {"huge_coordinates.xyz", sphere(n_sphere, 1e300), 0, {}},
+      {"tiny_coordinates.xyz", sphere(n_sphere, 1e-300), 0, {}},
+      {"extent_overflow.xyz", "-1e308 0 0\n1e308 0 0\n0 1e307 0\n0 0 1e307\n0 0 -1e307\n", 1,
+       {"beyond the largest double", "cannot be represented"}},
+      {"subnormal_extent.xyz", sphere(n_sphere, 1e-310), 1, {"smallest normal double", "cannot be represented"}},
       {"far_offset.xyz", sphere(n_sphere, 1.0, 1e15), 0, {}},
       {"duplicates.xyz", sph + sph, 0, {}},
       {"sphere.xyz", sph, 0, {}},
