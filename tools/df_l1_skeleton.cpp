@@ -17,6 +17,7 @@
 #include <CGAL/DF_L1_skeleton/IO/write_file_atomically.h>
 
 #include <tbb/global_control.h>
+#include <tbb/task_arena.h>
 
 #include <algorithm>
 #include <cctype>
@@ -180,12 +181,8 @@ void write_voxels(const std::string& path, const DF::Voxel_grid<Kernel>& grid,
   DF::write_point_ply(path, centres, {label, distance});
 }
 
-int run(const Settings& s)
+int run_stages(const Settings& s)
 {
-  std::unique_ptr<tbb::global_control> thread_limit;
-  if(s.threads > 0)
-    thread_limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
-                                                         std::size_t(s.threads));
   df_l1_tool::Stage_clock clock(s.quiet);
   const auto cloud = clock.run("read", [&] { return DF::read_point_cloud<Kernel>(s.input); });
   const std::vector<Point_3>& points = cloud.points;
@@ -308,6 +305,19 @@ int run(const Settings& s)
               << (s.segmentation.empty() ? "" : " and " + s.segmentation)
               << (s.report.empty() ? "" : " and " + s.report) << "\n";
   return 0;
+}
+
+// Runs the whole computation with exactly `--threads` threads. An explicit arena has
+// that many slots even beyond the core count (global_control alone only lowers the
+// limit), and the global limit lets that many threads join it; the report states the
+// arena's concurrency. The outputs do not depend on the number (test [threads]).
+int run(const Settings& s)
+{
+  if(s.threads <= 0)
+    return run_stages(s);
+  tbb::global_control limit(tbb::global_control::max_allowed_parallelism, std::size_t(s.threads));
+  tbb::task_arena arena(s.threads);
+  return arena.execute([&] { return run_stages(s); });
 }
 
 } // namespace

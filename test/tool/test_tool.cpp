@@ -3,6 +3,7 @@
 #include <catch2/catch.hpp>
 
 #include "evaluation/synthetic_shapes.h"
+#include "support/shared_data.h"
 
 #include <CGAL/DF_L1_skeleton/Parameters.h>
 
@@ -12,6 +13,7 @@
 #include <sys/wait.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -741,4 +743,86 @@ TEST_CASE("tool: --segmentation labels every input point with its vertex and bra
     CHECK(b.status == 2);
     CHECK(b.err.find("--segmentation") != std::string::npos);
   }
+}
+
+namespace {
+
+// The report without what may vary between runs: the seconds, the peak memory and the
+// number of threads. The rest is compared byte for byte (the tree keeps the numbers'
+// text as written).
+std::string deterministic_report(const std::string& path)
+{
+  boost::property_tree::ptree tree = read_report(path);
+  tree.erase("seconds");
+  tree.erase("peak_memory_mib");
+  tree.get_child("parameters").erase("threads");
+  if(auto stages = tree.get_child_optional("counts.contraction_stages"))
+    for(auto& stage : *stages)
+      stage.second.erase("projection_seconds");
+  std::ostringstream text;
+  boost::property_tree::write_json(text, tree);
+  return text.str();
+}
+
+} // namespace
+
+// The headline clouds of scripts/bench.sh (35,000 points, seed 7) and every scan of the
+// shared data folder, run with 1, 2, 3, 4 and 8 threads (8 oversubscribes a 2-core
+// machine: the tool runs in an arena of exactly --threads slots). About 90 s on 2 cores;
+// without the shared data folder only the bench clouds run (the ctest entry then reads
+// as skipped).
+TEST_CASE("tool: the same skeleton and report, byte for byte, for 1, 2, 3, 4 and 8 threads",
+          "[tool][threads][shared_data]")
+{
+  const Scratch scratch;
+  std::vector<std::string> inputs;
+  for(const char* headline : {"stick_figure:clean", "torus:clean", "branching_tree:clean", "many_armed:clean",
+                              "stick_figure:noise"})
+  {
+    const std::string name = headline, shape = name.substr(0, name.find(':')), variant = name.substr(name.find(':') + 1);
+    const std::string path = scratch.path(shape + "-" + variant + ".xyz");
+    DF_L1_test::write_xyz(path, DF_L1_test::make_sample(DF_L1_test::shape_by_name(shape),
+                                                        DF_L1_test::variant_by_name(variant), 35000, 7).points);
+    inputs.push_back(path);
+  }
+  const std::string data = DF_L1_test::shared_data_folder();
+  if(!data.empty())
+  {
+    std::vector<std::string> scans;
+    for(const auto& entry : fs::directory_iterator(data))
+    {
+      const std::string ext = entry.path().extension().string();
+      if(entry.is_regular_file() && (ext == ".xyz" || ext == ".ply" || ext == ".off"))
+        scans.push_back(entry.path().string());
+    }
+    std::sort(scans.begin(), scans.end());
+    CHECK(scans.size() >= 16);
+    inputs.insert(inputs.end(), scans.begin(), scans.end());
+  }
+  const auto start = std::chrono::steady_clock::now();
+  const std::string skeleton = scratch.path("skeleton.ply"), report = scratch.path("report.json");
+  for(const std::string& input : inputs)
+  {
+    INFO(input);
+    std::string reference_skeleton, reference_report;
+    for(const int threads : {1, 2, 3, 4, 8})
+    {
+      INFO(threads << " threads");
+      const Run r = run_tool(quoted(input) + " " + quoted(skeleton) + " --report " + quoted(report) + " --threads " +
+                               std::to_string(threads), scratch);
+      INFO(r.err);
+      REQUIRE(r.status == 0);
+      CHECK(read_report(report).get<int>("parameters.threads") == threads);
+      if(threads == 1)
+      {
+        reference_skeleton = read_text(skeleton);
+        reference_report = deterministic_report(report);
+        continue;
+      }
+      CHECK(read_text(skeleton) == reference_skeleton);
+      CHECK(deterministic_report(report) == reference_report);
+    }
+  }
+  WARN(inputs.size() << " inputs x 5 thread counts in "
+                     << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() << " s");
 }
