@@ -98,8 +98,11 @@ void handle_stop_signals()
 // Ends the run if a signal came while the outputs were renamed.
 void exit_on_deferred_signal()
 {
-  if(deferred_signal != 0)
-    ::_exit(128 + deferred_signal);
+  if(deferred_signal == 0)
+    return;
+  write_to_stderr(deferred_signal == SIGINT ? "\ndf_l1_skeleton: interrupted (SIGINT) after the outputs were written\n"
+                                            : "\ndf_l1_skeleton: terminated (SIGTERM) after the outputs were written\n");
+  ::_exit(128 + deferred_signal);
 }
 
 // The input is mapped while it is read: a file truncated meanwhile by another process
