@@ -171,7 +171,7 @@ std::vector<df_l1_tool::Option> option_table(Settings& s, bool& help, bool& vers
      [&](const std::string& v) { s.segmentation = v; }},
     {"preview-stages", "", "off", "with --stage final: add rows with the contracted samples, the initial skeleton, the distance field and the voxels to the preview",
      [&](const std::string&) { s.preview_stages = true; }},
-    {"threads", "N", "all cores", "number of threads",
+    {"threads", "N", "all cores", "number of threads (exactly N, even beyond the cores; the outputs do not depend on it)",
      [&](const std::string& v) { s.threads = int(parse_integer("threads", v, 1, 1024)); }},
     {"seed", "S", "0", "random seed, written to the report (the stages are deterministic and draw no random numbers)",
      [&](const std::string& v) { s.seed = parse_integer("seed", v, 0, 2147483647L); }},

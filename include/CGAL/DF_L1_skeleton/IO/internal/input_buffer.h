@@ -98,7 +98,8 @@ public:
       fail(name, "", "the file changed while it was being read (it had " + std::to_string(map_size_) +
                          " bytes when it was opened, " + std::to_string(static_cast<long long>(now.st_size)) +
                          " now)");
-    if(now.st_mtim.tv_sec != mtime_.tv_sec || now.st_mtim.tv_nsec != mtime_.tv_nsec)
+    const struct timespec modified = modification_time(now);
+    if(modified.tv_sec != mtime_.tv_sec || modified.tv_nsec != mtime_.tv_nsec)
       fail(name, "", "the file changed while it was being read (it was modified after it was opened)");
 #else
     (void)name;
@@ -142,7 +143,7 @@ public:
     map_ = p;
     map_size_ = size;
     fd_ = fd;
-    mtime_ = st.st_mtim;
+    mtime_ = modification_time(st);
     data_ = static_cast<const char*>(p);
     size_ = size;
     return true;
@@ -159,6 +160,16 @@ public:
   }
 
 private:
+#ifdef CGAL_DF_L1_HAS_MMAP
+  static struct timespec modification_time(const struct stat& st)
+  {
+#  if defined(__APPLE__)
+    return st.st_mtimespec;
+#  else
+    return st.st_mtim;
+#  endif
+  }
+#endif
   void swap(Input_buffer& o) noexcept
   {
     std::swap(owned_, o.owned_);
