@@ -65,7 +65,7 @@ struct Unfinished_file_slot
 };
 constexpr int unfinished_file_slot_count = 32;
 inline Unfinished_file_slot unfinished_file_slots[unfinished_file_slot_count];
-/// Nonzero while an Atomic_file_group renames its files.
+/// The number of Atomic_file_group objects renaming their files.
 inline std::atomic<int> committing_group{0};
 
 /// Registers `path` for removal on a signal; returns its slot, or -1 when the
@@ -392,14 +392,14 @@ public:
   ///         renamed before it stay, the others are removed with the group.
   void commit()
   {
-    internal::committing_group.store(1);
+    internal::committing_group.fetch_add(1); // a count: groups of other threads may commit too
     struct Done
     {
-      ~Done() { internal::committing_group.store(0); }
+      ~Done() { internal::committing_group.fetch_sub(1); }
     } done;
     std::size_t renamed = 0;
     for(; renamed < pending_.size(); ++renamed) {
-      const Pending& p = pending_[renamed];
+      Pending& p = pending_[renamed];
       std::error_code ec;
       std::filesystem::rename(p.temporary, p.destination, ec);
       if(ec) {
@@ -408,6 +408,7 @@ public:
         throw Write_error(message);
       }
       internal::unregister_unfinished_file(p.slot);
+      p.slot = -1;
     }
     forget(renamed);
   }
@@ -423,10 +424,9 @@ private:
     std::string path; // as the caller named it
     int slot;
   };
+  // Drops the first `renamed` files, already renamed and unregistered.
   void forget(std::size_t renamed)
   {
-    for(std::size_t i = 0; i < renamed; ++i)
-      internal::unregister_unfinished_file(pending_[i].slot);
     pending_.erase(pending_.begin(), pending_.begin() + std::ptrdiff_t(renamed));
   }
   static Atomic_file_group*& current()
