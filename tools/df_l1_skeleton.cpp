@@ -2,7 +2,8 @@
 // SPDX-License-Identifier: LGPL-3.0-or-later
 //
 // df_l1_skeleton: the command-line front end of the package.
-// Exit status: 0 success, 1 bad input or failed output, 2 bad usage.
+// Exit status: 0 success, 1 bad input or failed output, 2 bad usage, 128 + the signal
+// (130, 143) when stopped by SIGINT or SIGTERM.
 
 #include "heap_settings.h"
 #include "options.h"
@@ -17,9 +18,16 @@
 #include <CGAL/DF_L1_skeleton/IO/write_file_atomically.h>
 
 #include <tbb/global_control.h>
+#include <tbb/task_arena.h>
+
+#include <pthread.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cctype>
+#include <csignal>
+#include <cstdio>
+#include <cstring>
 #include <iostream>
 #include <iterator>
 #include <memory>
@@ -45,6 +53,91 @@ int stage_index(const std::string& stage)
       return i;
   return -1;
 }
+
+// Faults. A run stopped by SIGINT or SIGTERM leaves no file: the outputs are written
+// to temporary files (write_file_atomically) that one Atomic_file_group renames
+// together at the end, and the handler removes the temporary files, then exits with
+// 128 + the signal. Only the main thread writes, so the handler runs there: a worker
+// thread that gets the signal forwards it (else the main thread could create a file
+// just after the removal). A signal that comes while the group renames waits for the
+// renames (a few system calls): the outputs are then all new, the status still 130/143.
+pthread_t main_thread;
+volatile std::sig_atomic_t deferred_signal = 0;
+
+void write_to_stderr(const char* text) { (void)!::write(2, text, std::strlen(text)); }
+
+void on_stop_signal(int signal)
+{
+  if(!pthread_equal(pthread_self(), main_thread))
+  {
+    pthread_kill(main_thread, signal);
+    return;
+  }
+  if(!DF::remove_unfinished_files())
+  {
+    deferred_signal = signal;
+    return;
+  }
+  write_to_stderr(signal == SIGINT ? "\ndf_l1_skeleton: interrupted (SIGINT); no output written\n"
+                                   : "\ndf_l1_skeleton: terminated (SIGTERM); no output written\n");
+  ::_exit(128 + signal);
+}
+
+void handle_stop_signals()
+{
+  main_thread = pthread_self();
+  struct sigaction action;
+  std::memset(&action, 0, sizeof(action));
+  action.sa_handler = on_stop_signal;
+  sigemptyset(&action.sa_mask);
+  action.sa_flags = SA_RESTART; // a deferred signal must not fail the renames
+  for(const int signal : {SIGINT, SIGTERM})
+    sigaction(signal, &action, nullptr);
+}
+
+// Ends the run if a signal came while the outputs were renamed.
+void exit_on_deferred_signal()
+{
+  if(deferred_signal == 0)
+    return;
+  write_to_stderr(deferred_signal == SIGINT ? "\ndf_l1_skeleton: interrupted (SIGINT) after the outputs were written\n"
+                                            : "\ndf_l1_skeleton: terminated (SIGTERM) after the outputs were written\n");
+  ::_exit(128 + deferred_signal);
+}
+
+// The input is mapped while it is read: a file truncated meanwhile by another process
+// raises SIGBUS on the first access past its new end. While it lives, this reports that
+// (the message is made beforehand: a handler may not allocate) and exits with 1. Other
+// changes are found by the reader itself (size and modification time).
+char bus_error_message[8192];
+
+void on_bus_error(int)
+{
+  write_to_stderr(bus_error_message);
+  ::_exit(1);
+}
+
+class Changed_input_report
+{
+public:
+  explicit Changed_input_report(const std::string& input)
+  {
+    const std::string message =
+      "\ndf_l1_skeleton: " + input + ": the file changed while it was being read (truncated)\n";
+    std::snprintf(bus_error_message, sizeof(bus_error_message), "%s", message.c_str());
+    struct sigaction action;
+    std::memset(&action, 0, sizeof(action));
+    action.sa_handler = on_bus_error;
+    sigemptyset(&action.sa_mask);
+    sigaction(SIGBUS, &action, &previous_);
+  }
+  ~Changed_input_report() { sigaction(SIGBUS, &previous_, nullptr); }
+  Changed_input_report(const Changed_input_report&) = delete;
+  Changed_input_report& operator=(const Changed_input_report&) = delete;
+
+private:
+  struct sigaction previous_;
+};
 
 struct Settings
 {
@@ -78,7 +171,7 @@ std::vector<df_l1_tool::Option> option_table(Settings& s, bool& help, bool& vers
      [&](const std::string& v) { s.segmentation = v; }},
     {"preview-stages", "", "off", "with --stage final: add rows with the contracted samples, the initial skeleton, the distance field and the voxels to the preview",
      [&](const std::string&) { s.preview_stages = true; }},
-    {"threads", "N", "all cores", "number of threads",
+    {"threads", "N", "all cores", "number of threads (exactly N, even beyond the cores; the outputs do not depend on it)",
      [&](const std::string& v) { s.threads = int(parse_integer("threads", v, 1, 1024)); }},
     {"seed", "S", "0", "random seed, written to the report (the stages are deterministic and draw no random numbers)",
      [&](const std::string& v) { s.seed = parse_integer("seed", v, 0, 2147483647L); }},
@@ -155,7 +248,8 @@ void print_help(const std::vector<df_l1_tool::Option>& table)
   std::cout << "\nThe --report JSON has parameters (the values used, derived ones resolved), seconds per\n"
                "stage and counts; with --stage final also the contraction's parameters and its\n"
                "per-stage support radii (counts.contraction_stages).\n"
-               "\nExit status: 0 success, 1 bad input or output, 2 bad usage.\n";
+               "\nExit status: 0 success, 1 bad input or output, 2 bad usage, 130/143 stopped by\n"
+               "SIGINT/SIGTERM (no output is left: the outputs appear together at the end).\n";
 }
 
 bool has_suffix(std::string s, const std::string& suffix)
@@ -180,14 +274,13 @@ void write_voxels(const std::string& path, const DF::Voxel_grid<Kernel>& grid,
   DF::write_point_ply(path, centres, {label, distance});
 }
 
-int run(const Settings& s)
+int run_stages(const Settings& s)
 {
-  std::unique_ptr<tbb::global_control> thread_limit;
-  if(s.threads > 0)
-    thread_limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
-                                                         std::size_t(s.threads));
   df_l1_tool::Stage_clock clock(s.quiet);
-  const auto cloud = clock.run("read", [&] { return DF::read_point_cloud<Kernel>(s.input); });
+  const auto cloud = clock.run("read", [&] {
+    const Changed_input_report changed_input(s.input);
+    return DF::read_point_cloud<Kernel>(s.input);
+  });
   const std::vector<Point_3>& points = cloud.points;
 
   // The library resolves the derived defaults; the report states what it used. The
@@ -242,6 +335,8 @@ int run(const Settings& s)
   // The skeleton written: the last one computed.
   const DF::Skeleton_graph<Kernel>* skeleton = final_skeleton ? final_skeleton : initial ? &initial->graph : nullptr;
 
+  // Every output waits in its temporary file until all are written (see on_stop_signal).
+  DF::Atomic_file_group outputs;
   clock.run("write", [&] {
     if(skeleton)
       DF::write_skeleton(s.output, *skeleton);
@@ -303,11 +398,26 @@ int run(const Settings& s)
       df_l1_tool::report_json(s, skeletonization, grid, field, initial, contracted, final_skeleton, clock);
     DF::write_file_atomically(s.report, [&](std::ostream& os) { os << report << "\n"; });
   }
+  outputs.commit();
+  exit_on_deferred_signal();
   if(!s.quiet)
     std::cerr << "df_l1_skeleton: wrote " << s.output << (s.preview.empty() ? "" : " and " + s.preview)
               << (s.segmentation.empty() ? "" : " and " + s.segmentation)
               << (s.report.empty() ? "" : " and " + s.report) << "\n";
   return 0;
+}
+
+// Runs the whole computation with exactly `--threads` threads. An explicit arena has
+// that many slots even beyond the core count (global_control alone only lowers the
+// limit), and the global limit lets that many threads join it; the report states the
+// arena's concurrency. The outputs do not depend on the number (test [threads]).
+int run(const Settings& s)
+{
+  if(s.threads <= 0)
+    return run_stages(s);
+  tbb::global_control limit(tbb::global_control::max_allowed_parallelism, std::size_t(s.threads));
+  tbb::task_arena arena(s.threads);
+  return arena.execute([&] { return run_stages(s); });
 }
 
 } // namespace
@@ -359,6 +469,7 @@ int main(int argc, char** argv)
     std::cerr << "df_l1_skeleton: " << e.what() << "\n";
     return 2;
   }
+  handle_stop_signals();
   try
   {
     return run(settings);

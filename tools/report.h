@@ -42,7 +42,7 @@ std::string report_json(const Settings& s, CGAL::DF_L1_skeletonization<Kernel, C
   const double voxel_size = CGAL::to_double(grid.voxel_size);
   Json_object parameters;
   parameters.text("stage", s.stage)
-    .number("threads", s.threads > 0 ? s.threads : double(tbb::this_task_arena::max_concurrency()))
+    .number("threads", double(tbb::this_task_arena::max_concurrency())) // of the arena the run is in
     .number("seed", double(s.seed))
     .number("bbox_diagonal", skeletonization.bbox_diagonal())
     .text("denoising", DF::parameter_text(s.parameters, "denoising"))

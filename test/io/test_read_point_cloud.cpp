@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -1010,5 +1011,63 @@ TEST_CASE("read_point_cloud: the shared real data sets load", "[io][read][data][
     const Cloud pc = read_unmodified(path);
     CHECK(pc.points.size() == e.points);
     CHECK(pc.normals.size() == (e.normals ? e.points : 0));
+  }
+}
+
+TEST_CASE("read_point_cloud: a file changed while it is read is an error; a removed one is not", "[io][read][faults]")
+{
+  namespace reader = CGAL::DF_L1::internal::point_cloud_reader;
+  const Temp_dir dir;
+  std::string content;
+  for(int i = 0; i < 1000; ++i)
+    content += std::to_string(i) + " 1 2\n";
+  const auto changed = [](const reader::Input_buffer& data, const std::string& path) {
+    try {
+      data.check_unchanged(path);
+    } catch(const CGAL::DF_L1::Read_error& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  // What happens between the mapping and the end of the parsing.
+  SECTION("grown")
+  {
+    const std::string path = dir.write("grown.xyz", content);
+    const reader::Input_buffer data = reader::read_file(path);
+    std::ofstream(path, std::ios::app) << "5 5 5\n";
+    CHECK_THAT(changed(data, path), Contains(path + ": the file changed while it was being read") &&
+                                        Contains(std::to_string(content.size()) + " bytes"));
+  }
+  SECTION("rewritten in place, same size")
+  {
+    const std::string path = dir.write("rewritten.xyz", content);
+    const reader::Input_buffer data = reader::read_file(path);
+    {
+      std::fstream f(path, std::ios::in | std::ios::out | std::ios::binary);
+      f.seekp(0);
+      f << '9';
+    }
+    // a later modification time, whatever the clock's granularity
+    const auto later = fs::last_write_time(path) + std::chrono::seconds(2);
+    fs::last_write_time(path, later);
+    CHECK_THAT(changed(data, path), Contains("the file changed while it was being read (it was modified"));
+  }
+  SECTION("removed or replaced: the mapping still reads the file opened")
+  {
+    const std::string path = dir.write("removed.xyz", content);
+    const reader::Input_buffer data = reader::read_file(path);
+    fs::remove(path);
+    CHECK(changed(data, path).empty());
+    const std::string other = dir.write("other.xyz", "1 2 3\n");
+    const std::string replaced = dir.write("replaced.xyz", content);
+    const reader::Input_buffer data2 = reader::read_file(replaced);
+    fs::rename(other, replaced);
+    CHECK(changed(data2, replaced).empty());
+    CHECK(data2.view() == content);
+  }
+  SECTION("unchanged")
+  {
+    const std::string path = dir.write("same.xyz", content);
+    CHECK(CGAL::DF_L1::read_point_cloud<K>(path).points.size() == 1000);
   }
 }

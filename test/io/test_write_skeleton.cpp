@@ -12,7 +12,12 @@
 
 #include <catch2/catch.hpp>
 
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
 #include <algorithm>
+#include <csignal>
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
@@ -790,5 +795,125 @@ TEST_CASE("write_svg_preview without skeleton rows", "[io][svg]")
       CHECK(svg.find("nan") == std::string::npos);
       CHECK(count_of(svg, "class=\"view-label\"") == 3);
     }
+  }
+}
+
+TEST_CASE("write_file_atomically: remove_unfinished_files() removes the file being written", "[io][write][atomic][faults]")
+{
+  Scratch_dir dir;
+  const std::string path = dir.file("f.txt");
+  using CGAL::DF_L1::write_file_atomically;
+  // What a signal handler sees in the middle of a write: the temporary file, registered.
+  std::vector<std::string> during;
+  CHECK_THROWS_WITH(write_file_atomically(path,
+                                          [&](std::ostream& os) {
+                                            os << "partial" << std::flush;
+                                            during = dir.entries();
+                                            CHECK(CGAL::DF_L1::remove_unfinished_files());
+                                          }),
+                    Catch::Contains("f.txt"));
+  REQUIRE(during.size() == 1);
+  CHECK(during[0].rfind(".f.txt.tmp.", 0) == 0);
+  CHECK(dir.entries().empty());
+  // Once the file is complete, nothing is registered any more.
+  write_file_atomically(path, [](std::ostream& os) { os << "whole\n"; });
+  CHECK(CGAL::DF_L1::remove_unfinished_files());
+  CHECK(read_file(path) == "whole\n");
+}
+
+TEST_CASE("Atomic_file_group: the files of a group appear together at its commit", "[io][write][atomic][faults]")
+{
+  Scratch_dir dir;
+  using CGAL::DF_L1::write_file_atomically;
+  const std::string a = dir.file("a.txt"), b = dir.file("b.txt");
+  SECTION("commit renames them all")
+  {
+    write_text(a, "old a\n");
+    CGAL::DF_L1::Atomic_file_group group;
+    write_file_atomically(a, [](std::ostream& os) { os << "new a\n"; });
+    write_file_atomically(b, [](std::ostream& os) { os << "new b\n"; });
+    CHECK(group.size() == 2);
+    CHECK(read_file(a) == "old a\n");
+    CHECK_FALSE(fs::exists(b));
+    CHECK(dir.entries().size() == 3); // a.txt and two temporary files
+    group.commit();
+    CHECK(group.size() == 0);
+    CHECK(read_file(a) == "new a\n");
+    CHECK(read_file(b) == "new b\n");
+    CHECK(dir.entries() == std::vector<std::string>{"a.txt", "b.txt"});
+  }
+  SECTION("a group left without commit (an exception) changes nothing")
+  {
+    write_text(a, "old a\n");
+    CHECK_THROWS_AS(([&] {
+                      CGAL::DF_L1::Atomic_file_group group;
+                      write_file_atomically(a, [](std::ostream& os) { os << "new a\n"; });
+                      write_file_atomically(b, [](std::ostream&) { throw std::runtime_error("boom"); });
+                      group.commit();
+                    }()),
+                    std::runtime_error);
+    CHECK(read_file(a) == "old a\n");
+    CHECK(dir.entries() == std::vector<std::string>{"a.txt"});
+  }
+  SECTION("a signal handler removes the files waiting for the commit")
+  {
+    CGAL::DF_L1::Atomic_file_group group;
+    write_file_atomically(a, [](std::ostream& os) { os << "new a\n"; });
+    write_file_atomically(b, [](std::ostream& os) { os << "new b\n"; });
+    CHECK(CGAL::DF_L1::remove_unfinished_files());
+    CHECK(dir.entries().empty());
+    CHECK_THROWS_AS(group.commit(), CGAL::DF_L1::Write_error);
+    CHECK(dir.entries().empty());
+  }
+  SECTION("groups do not nest")
+  {
+    CGAL::DF_L1::Atomic_file_group group;
+    CHECK_THROWS_AS(CGAL::DF_L1::Atomic_file_group(), std::logic_error);
+  }
+}
+
+TEST_CASE("write_file_atomically: a full disk names the file and the reason, and leaves no file", "[io][write][atomic][faults]")
+{
+  Scratch_dir dir;
+  using CGAL::DF_L1::write_file_atomically;
+  const auto megabyte = [](std::ostream& os) {
+    for(int i = 0; i < 100000; ++i)
+      os << "line " << i << '\n';
+  };
+  // A file-size limit makes write() fail with EFBIG, as a full disk fails with ENOSPC.
+  // In a child process, which reports by its exit status: 0 the expected error.
+  const pid_t child = ::fork();
+  REQUIRE(child >= 0);
+  if(child == 0) {
+    std::signal(SIGXFSZ, SIG_IGN);
+    const rlimit limit{64 * 1024, 64 * 1024};
+    int status = 1;
+    if(::setrlimit(RLIMIT_FSIZE, &limit) == 0) {
+      try {
+        write_file_atomically(dir.file("big.txt"), megabyte);
+        status = 2;
+      } catch(const CGAL::DF_L1::Write_error& e) {
+        const std::string what = e.what();
+        status = what.find("big.txt") != std::string::npos && what.find("File too large") != std::string::npos ? 0 : 3;
+      }
+    }
+    std::_Exit(status);
+  }
+  int status = 0;
+  REQUIRE(::waitpid(child, &status, 0) == child);
+  REQUIRE(WIFEXITED(status));
+  CHECK(WEXITSTATUS(status) == 0);
+  CHECK(dir.entries().empty());
+
+  // A device is written in place (a rename would replace it): /dev/full is a full disk.
+  if(fs::exists("/dev/full") && fs::exists("/dev/null")) {
+    const std::string full = dir.file("full.txt");
+    fs::create_symlink("/dev/full", full);
+    CHECK_THROWS_WITH(write_file_atomically(full, megabyte),
+                      Catch::Contains("full.txt") && Catch::Contains("No space left on device"));
+    CHECK(fs::is_character_file("/dev/full"));
+    CHECK_NOTHROW(write_file_atomically("/dev/null", megabyte));
+    CHECK(fs::is_character_file("/dev/null"));
+    CHECK(dir.entries() == std::vector<std::string>{"full.txt"});
   }
 }

@@ -3,15 +3,20 @@
 #include <catch2/catch.hpp>
 
 #include "evaluation/synthetic_shapes.h"
+#include "support/shared_data.h"
 
 #include <CGAL/DF_L1_skeleton/Parameters.h>
 
 #include <boost/property_tree/json_parser.hpp>
 #include <boost/property_tree/ptree.hpp>
 
+#include <sys/resource.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <algorithm>
+#include <chrono>
+#include <csignal>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -740,5 +745,309 @@ TEST_CASE("tool: --segmentation labels every input point with its vertex and bra
                            " " + bad, scratch);
     CHECK(b.status == 2);
     CHECK(b.err.find("--segmentation") != std::string::npos);
+  }
+}
+
+namespace {
+
+// The report without what may vary between runs: the seconds, the peak memory and the
+// number of threads. The rest is compared byte for byte (the tree keeps the numbers'
+// text as written).
+std::string deterministic_report(const std::string& path)
+{
+  boost::property_tree::ptree tree = read_report(path);
+  tree.erase("seconds");
+  tree.erase("peak_memory_mib");
+  tree.get_child("parameters").erase("threads");
+  if(auto stages = tree.get_child_optional("counts.contraction_stages"))
+    for(auto& stage : *stages)
+      stage.second.erase("projection_seconds");
+  std::ostringstream text;
+  boost::property_tree::write_json(text, tree);
+  return text.str();
+}
+
+} // namespace
+
+// The headline clouds of scripts/bench.sh (35,000 points, seed 7) and every scan of the
+// shared data folder, run with 1, 2, 3, 4 and 8 threads (8 oversubscribes a 2-core
+// machine: the tool runs in an arena of exactly --threads slots); the skeleton, the
+// report, the segmentation and the preview must not change. About 75 s on 2 cores;
+// without the shared data folder only the bench clouds run (the ctest entry then reads
+// as skipped).
+TEST_CASE("tool: the same skeleton and report, byte for byte, for 1, 2, 3, 4 and 8 threads",
+          "[tool][threads][shared_data]")
+{
+  const Scratch scratch;
+  std::vector<std::string> inputs;
+  for(const char* headline : {"stick_figure:clean", "torus:clean", "branching_tree:clean", "many_armed:clean",
+                              "stick_figure:noise"})
+  {
+    const std::string name = headline, shape = name.substr(0, name.find(':')), variant = name.substr(name.find(':') + 1);
+    const std::string path = scratch.path(shape + "-" + variant + ".xyz");
+    DF_L1_test::write_xyz(path, DF_L1_test::make_sample(DF_L1_test::shape_by_name(shape),
+                                                        DF_L1_test::variant_by_name(variant), 35000, 7).points);
+    inputs.push_back(path);
+  }
+  const std::string data = DF_L1_test::shared_data_folder();
+  if(!data.empty())
+  {
+    std::vector<std::string> scans;
+    for(const auto& entry : fs::directory_iterator(data))
+    {
+      const std::string ext = entry.path().extension().string();
+      if(entry.is_regular_file() && (ext == ".xyz" || ext == ".ply" || ext == ".off"))
+        scans.push_back(entry.path().string());
+    }
+    std::sort(scans.begin(), scans.end());
+    CHECK(scans.size() >= 16);
+    inputs.insert(inputs.end(), scans.begin(), scans.end());
+  }
+  const auto start = std::chrono::steady_clock::now();
+  const std::string skeleton = scratch.path("skeleton.ply"), report = scratch.path("report.json"),
+                    segments = scratch.path("segments.ply"), preview = scratch.path("preview.svg");
+  for(const std::string& input : inputs)
+  {
+    INFO(input);
+    std::vector<std::string> reference;
+    for(const int threads : {1, 2, 3, 4, 8})
+    {
+      INFO(threads << " threads");
+      const Run r = run_tool(quoted(input) + " " + quoted(skeleton) + " --report " + quoted(report) + " --segmentation " +
+                               quoted(segments) + " --preview " + quoted(preview) + " --threads " + std::to_string(threads),
+                             scratch);
+      INFO(r.err);
+      REQUIRE(r.status == 0);
+      CHECK(read_report(report).get<int>("parameters.threads") == threads);
+      const std::vector<std::string> outputs{read_text(skeleton), deterministic_report(report), read_text(segments),
+                                             read_text(preview)};
+      if(threads == 1)
+        reference = outputs;
+      // One by one, so that a failure says which.
+      CHECK(outputs[0] == reference[0]);
+      CHECK(outputs[1] == reference[1]);
+      CHECK(outputs[2] == reference[2]);
+      CHECK(outputs[3] == reference[3]);
+    }
+  }
+  WARN(inputs.size() << " inputs x 5 thread counts in "
+                     << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() << " s");
+}
+
+namespace {
+
+// A run of the tool as a child process whose stderr the test reads as it comes, to act
+// at a given moment of the run (a signal, a change of the input).
+class Child_run
+{
+public:
+  // `in_child` runs in the child before exec (limits, signal dispositions).
+  Child_run(const std::vector<std::string>& arguments, void (*in_child)() = nullptr)
+  {
+    int fds[2];
+    REQUIRE(::pipe(fds) == 0);
+    pid_ = ::fork();
+    REQUIRE(pid_ >= 0);
+    if(pid_ == 0)
+    {
+      ::dup2(fds[1], 2);
+      ::close(fds[0]);
+      ::close(fds[1]);
+      if(in_child)
+        in_child();
+      std::vector<char*> argv{const_cast<char*>(DF_L1_TOOL_PATH)};
+      for(const std::string& a : arguments)
+        argv.push_back(const_cast<char*>(a.c_str()));
+      argv.push_back(nullptr);
+      ::execv(DF_L1_TOOL_PATH, argv.data());
+      std::_Exit(127);
+    }
+    ::close(fds[1]);
+    err_fd_ = fds[0];
+  }
+  ~Child_run()
+  {
+    if(pid_ > 0 && !reaped_)
+    {
+      ::kill(pid_, SIGKILL);
+      wait();
+    }
+    if(err_fd_ >= 0)
+      ::close(err_fd_);
+  }
+  // Reads stderr until `text` appears (true) or the child closes it (false).
+  bool wait_for(const std::string& text)
+  {
+    char buffer[4096];
+    while(err_.find(text) == std::string::npos)
+    {
+      const ssize_t n = ::read(err_fd_, buffer, sizeof(buffer));
+      if(n <= 0)
+        return false;
+      err_.append(buffer, std::size_t(n));
+    }
+    return true;
+  }
+  void signal(int s) { ::kill(pid_, s); }
+  bool running()
+  {
+    if(!reaped_ && ::waitpid(pid_, &raw_status_, WNOHANG) == pid_)
+      reaped_ = true;
+    return !reaped_;
+  }
+  // The exit status (-1 if killed by a signal), after the rest of stderr.
+  int wait()
+  {
+    wait_for("\x01never\x01");
+    if(!reaped_)
+      ::waitpid(pid_, &raw_status_, 0);
+    reaped_ = true;
+    status_ = WIFEXITED(raw_status_) ? WEXITSTATUS(raw_status_) : -1;
+    return status_;
+  }
+  const std::string& err() const { return err_; }
+
+private:
+  pid_t pid_ = -1;
+  int err_fd_ = -1;
+  int raw_status_ = 0, status_ = -1;
+  bool reaped_ = false;
+  std::string err_;
+};
+
+std::vector<std::string> entries(const std::string& folder)
+{
+  std::vector<std::string> names;
+  for(const auto& e : fs::directory_iterator(folder))
+    names.push_back(e.path().filename().string());
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+// A folder holding only a cloud large enough for the run to last a few seconds.
+std::string big_input(const Scratch& scratch, const std::string& folder, std::size_t n)
+{
+  fs::create_directories(scratch.path(folder));
+  const std::string path = scratch.path(folder + "/input.xyz");
+  DF_L1_test::write_xyz(path, DF_L1_test::make_sample(DF_L1_test::shape_by_name("stick_figure"),
+                                                      DF_L1_test::Variant::clean, n, 7).points);
+  return path;
+}
+
+} // namespace
+
+TEST_CASE("tool: SIGINT and SIGTERM exit with 130 and 143 and leave no file", "[tool][faults][signals]")
+{
+  const Scratch scratch;
+  const std::string input = big_input(scratch, "signals", 600000), folder = scratch.path("signals");
+  const std::vector<std::string> arguments{input, folder + "/skeleton.ply", "--segmentation", folder + "/segments.ply",
+                                           "--report", folder + "/report.json", "--preview", folder + "/preview.svg"};
+  const struct
+  {
+    int signal;
+    const char* when; // a stage's progress, or the temporary file to wait for
+    bool file;
+  } cases[] = {
+    {SIGINT, "contraction...", false},   // computing: no file yet
+    {SIGTERM, ".skeleton.ply.tmp", true}, // the first output being written
+    {SIGINT, ".segments.ply.tmp", true},  // the second, the first waiting for the commit
+  };
+  for(const auto& c : cases)
+  {
+    INFO(c.when << ", signal " << c.signal);
+    Child_run run(arguments);
+    if(!c.file)
+      REQUIRE(run.wait_for(c.when));
+    else
+    {
+      REQUIRE(run.wait_for("write..."));
+      bool seen = false;
+      while(!seen && run.running())
+        for(const std::string& name : entries(folder))
+          seen = seen || name.rfind(c.when, 0) == 0;
+      REQUIRE(seen);
+    }
+    run.signal(c.signal);
+    const int status = run.wait();
+    INFO(run.err());
+    CHECK(status == 128 + c.signal);
+    CHECK(run.err().find(c.signal == SIGINT ? "interrupted (SIGINT)" : "terminated (SIGTERM)") != std::string::npos);
+    CHECK(entries(folder) == std::vector<std::string>{"input.xyz"});
+  }
+}
+
+TEST_CASE("tool: a full disk names the file and the reason, and leaves no file", "[tool][faults]")
+{
+  const Scratch scratch;
+  const std::string input = shape_input(scratch, "y_junction", 3000);
+  const std::string folder = scratch.path("disk");
+  fs::create_directories(folder);
+  // A file-size limit makes write() fail with EFBIG, as a full disk with ENOSPC; the
+  // skeleton fits, the segmentation (3000 points) does not, and neither is left.
+  Child_run limited({input, folder + "/skeleton.ply", "--segmentation", folder + "/segments.ply", "--quiet"}, [] {
+    std::signal(SIGXFSZ, SIG_IGN);
+    const rlimit limit{32 * 1024, 32 * 1024};
+    ::setrlimit(RLIMIT_FSIZE, &limit);
+  });
+  CHECK(limited.wait() == 1);
+  CHECK(limited.err().find("cannot write '" + folder + "/segments.ply': writing failed: File too large") != std::string::npos);
+  CHECK(entries(folder).empty());
+
+  // /dev/full, through a link named as an output (the device is written in place).
+  if(!fs::exists("/dev/full"))
+    return;
+  fs::create_symlink("/dev/full", folder + "/full.ply");
+  fs::create_symlink("/dev/full", folder + "/full.json");
+  for(const std::vector<std::string>& arguments :
+      {std::vector<std::string>{input, folder + "/full.ply", "--quiet"},
+       std::vector<std::string>{input, folder + "/skeleton.ply", "--report", folder + "/full.json", "--quiet"}})
+  {
+    Child_run run(arguments);
+    CHECK(run.wait() == 1);
+    INFO(run.err());
+    CHECK(run.err().find("/full.") != std::string::npos);
+    CHECK(run.err().find("No space left on device") != std::string::npos);
+    CHECK(entries(folder) == std::vector<std::string>{"full.json", "full.ply"});
+    CHECK(fs::is_character_file("/dev/full"));
+  }
+}
+
+TEST_CASE("tool: an input truncated or changed while it is read is reported", "[tool][faults]")
+{
+  const Scratch scratch;
+  const std::string original = big_input(scratch, "original", 600000), folder = scratch.path("changed");
+  fs::create_directories(folder);
+  const std::string input = folder + "/input.xyz";
+  const std::uintmax_t size = fs::file_size(original);
+  // The change must come while the tool parses (about 0.1 s): right after it says
+  // "read...". A change that comes too early or too late is tried again.
+  const struct
+  {
+    const char* change;
+    const char* message;
+  } cases[] = {{"truncated", "the file changed while it was being read (truncated)"},
+               {"appended", "the file changed while it was being read (it had "}};
+  for(const auto& c : cases)
+  {
+    INFO(c.change);
+    bool hit = false;
+    for(int attempt = 0; attempt < 8 && !hit; ++attempt)
+    {
+      fs::copy_file(original, input, fs::copy_options::overwrite_existing);
+      Child_run run({input, folder + "/skeleton.ply", "--stage", "voxels"});
+      REQUIRE(run.wait_for("read..."));
+      if(std::string(c.change) == "truncated")
+        fs::resize_file(input, size / 3);
+      else
+        std::ofstream(input, std::ios::app) << "1 2 3\n";
+      const int status = run.wait();
+      INFO(run.err());
+      hit = status == 1 && run.err().find(input + ": " + c.message) != std::string::npos;
+      if(status != 0)
+        CHECK(entries(folder) == std::vector<std::string>{"input.xyz"});
+      fs::remove(folder + "/skeleton.ply");
+    }
+    if(!hit)
+      WARN("skipped: the change of the input never came while the tool read it");
   }
 }

@@ -25,6 +25,12 @@
 ///   points are still returned.
 /// - Windows (CR LF) and old Mac (lone CR) line ends and a UTF-8 byte-order
 ///   mark are accepted in text data.
+/// - A file that another process modifies while `read_point_cloud()` reads it
+///   (its size or modification time differ at the end from when it was opened)
+///   gives `"<file>: the file changed while it was being read (...)"`. A file
+///   removed or replaced by a rename meanwhile is read as it was opened (POSIX).
+///   A file *truncated* while it is mapped ends the process with SIGBUS, unless
+///   the program handles that signal (the tool reports it; see `input_buffer.h`).
 
 #include <CGAL/DF_L1_skeleton/errors.h>
 #include <CGAL/DF_L1_skeleton/IO/internal/input_buffer.h>
@@ -247,12 +253,18 @@ Point_cloud<Kernel> read_point_cloud(const std::string& filename)
                      " (expected .xyz, .pts, .txt, .ply or .off)");
   const reader::Input_buffer data = reader::read_file(filename);
   Point_cloud<Kernel> pc;
-  if(is_xyz)
-    reader::parse_xyz(data.view(), filename, pc, &data);
-  else if(ext == ".ply")
-    reader::parse_ply(data.view(), filename, pc, &data);
-  else
-    reader::parse_off(data.view(), filename, pc, &data);
+  try {
+    if(is_xyz)
+      reader::parse_xyz(data.view(), filename, pc, &data);
+    else if(ext == ".ply")
+      reader::parse_ply(data.view(), filename, pc, &data);
+    else
+      reader::parse_off(data.view(), filename, pc, &data);
+  } catch(const Read_error&) {
+    data.check_unchanged(filename); // a change, rather than the error it caused
+    throw;
+  }
+  data.check_unchanged(filename);
   return pc;
 }
 

@@ -14,7 +14,12 @@
 /// drop the pages they are done with (`drop_pages_before()`), so reading holds
 /// about the points plus a few MB, whatever the file size.
 /// One caveat of mappings: a file truncated by another process *while* it is
-/// read ends the process with SIGBUS; the readers do not guard against that.
+/// read ends the process with SIGBUS, which a library cannot catch; a program
+/// that must report it handles SIGBUS while it reads (df_l1_skeleton does). Other
+/// changes are caught after the parsing: the mapping keeps its descriptor, and
+/// `check_unchanged()` compares the file's size and modification time with those
+/// it had when it was mapped. A file removed or replaced by a rename meanwhile is
+/// no change: the mapping still reads the file that was opened.
 
 #include <CGAL/DF_L1_skeleton/IO/internal/reader_messages.h>
 
@@ -78,6 +83,29 @@ public:
   }
   ~Input_buffer() { unmap(); }
 
+  /// Throws Read_error naming `name` if the mapped file's size or modification
+  /// time differ from when it was mapped: the bytes parsed may then mix the old
+  /// and the new content. A no-op for buffers that are not mappings.
+  void check_unchanged(const std::string& name) const
+  {
+#ifdef CGAL_DF_L1_HAS_MMAP
+    if(map_ == nullptr || fd_ < 0)
+      return;
+    struct stat now;
+    if(::fstat(fd_, &now) != 0)
+      return; // nothing to compare with; the parsing succeeded
+    if(static_cast<std::uint64_t>(now.st_size) != static_cast<std::uint64_t>(map_size_))
+      fail(name, "", "the file changed while it was being read (it had " + std::to_string(map_size_) +
+                         " bytes when it was opened, " + std::to_string(static_cast<long long>(now.st_size)) +
+                         " now)");
+    const struct timespec modified = modification_time(now);
+    if(modified.tv_sec != mtime_.tv_sec || modified.tv_nsec != mtime_.tv_nsec)
+      fail(name, "", "the file changed while it was being read (it was modified after it was opened)");
+#else
+    (void)name;
+#endif
+  }
+
   std::string_view view() const { return std::string_view(data_, size_); }
 
   /// Lets the system reclaim the mapped pages before `offset`: the parsers call
@@ -98,28 +126,29 @@ public:
 #endif
   }
 
-  /// Maps the regular file open as `fd` (of `size` bytes); false if the
-  /// system refuses (the caller then reads it as a stream).
-  bool map_file(int fd, std::size_t size)
-  {
 #ifdef CGAL_DF_L1_HAS_MMAP
+  /// Maps the regular file open as `fd`, whose status is `st`, and takes the
+  /// descriptor (for check_unchanged()); false, leaving `fd` to the caller, if
+  /// the system refuses (the caller then reads it as a stream).
+  bool map_file(int fd, const struct stat& st)
+  {
+    const std::size_t size = static_cast<std::size_t>(st.st_size);
     if(size == 0)
       return false; // mmap refuses empty mappings
     void* p = ::mmap(nullptr, size, PROT_READ, MAP_PRIVATE, fd, 0);
     if(p == MAP_FAILED)
       return false;
     ::madvise(p, size, MADV_SEQUENTIAL); // read-ahead, and early reuse of read pages
+    unmap();
     map_ = p;
     map_size_ = size;
+    fd_ = fd;
+    mtime_ = modification_time(st);
     data_ = static_cast<const char*>(p);
     size_ = size;
     return true;
-#else
-    (void)fd;
-    (void)size;
-    return false;
-#endif
   }
+#endif
 
   /// Takes `n` bytes of `bytes`.
   void own(std::unique_ptr<char[]> bytes, std::size_t n)
@@ -131,6 +160,16 @@ public:
   }
 
 private:
+#ifdef CGAL_DF_L1_HAS_MMAP
+  static struct timespec modification_time(const struct stat& st)
+  {
+#  if defined(__APPLE__)
+    return st.st_mtimespec;
+#  else
+    return st.st_mtim;
+#  endif
+  }
+#endif
   void swap(Input_buffer& o) noexcept
   {
     std::swap(owned_, o.owned_);
@@ -138,12 +177,19 @@ private:
     std::swap(size_, o.size_);
     std::swap(map_, o.map_);
     std::swap(map_size_, o.map_size_);
+#ifdef CGAL_DF_L1_HAS_MMAP
+    std::swap(fd_, o.fd_);
+    std::swap(mtime_, o.mtime_);
+#endif
   }
   void unmap()
   {
 #ifdef CGAL_DF_L1_HAS_MMAP
     if(map_ != nullptr)
       ::munmap(map_, map_size_);
+    if(fd_ >= 0)
+      ::close(fd_);
+    fd_ = -1;
 #endif
     map_ = nullptr;
   }
@@ -153,6 +199,10 @@ private:
   std::size_t size_ = 0;
   void* map_ = nullptr;
   std::size_t map_size_ = 0;
+#ifdef CGAL_DF_L1_HAS_MMAP
+  int fd_ = -1;         // of the mapped file, for check_unchanged()
+  struct timespec mtime_ = {}; // its modification time when mapped
+#endif
 };
 
 /// Reads everything left in `in`. A seekable stream (a file) is read in one
@@ -232,8 +282,9 @@ inline bool map_regular_file(const std::string& filename, Input_buffer& out, int
   // Size 0 is left to the stream path: files of /proc say 0 yet have content.
   if(::fstat(fd, &st) == 0 && S_ISREG(st.st_mode) && st.st_size > 0 &&
      static_cast<std::uint64_t>(st.st_size) <= static_cast<std::uint64_t>(SIZE_MAX))
-    mapped = out.map_file(fd, static_cast<std::size_t>(st.st_size));
-  ::close(fd); // a mapping outlives its descriptor
+    mapped = out.map_file(fd, st); // which then owns the descriptor
+  if(!mapped)
+    ::close(fd);
   return mapped;
 #else
   (void)filename;
