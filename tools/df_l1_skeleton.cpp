@@ -144,6 +144,7 @@ struct Settings
   std::string input, output, report, preview, segmentation, stage = "final";
   bool preview_stages = false;
   int threads = 0; // 0: all cores
+  double max_memory = 0; // bytes; 0: the memory available at the start
   long seed = 0;
   bool quiet = false;
   DF::Parameters parameters; // the library's, set from the options of parameter_table()
@@ -173,6 +174,9 @@ std::vector<df_l1_tool::Option> option_table(Settings& s, bool& help, bool& vers
      [&](const std::string&) { s.preview_stages = true; }},
     {"threads", "N", "all cores", "number of threads (exactly N, even beyond the cores; the outputs do not depend on it)",
      [&](const std::string& v) { s.threads = int(parse_integer("threads", v, 1, 1024)); }},
+    {"max-memory", "SIZE", "available memory",
+     "refuse a run whose estimated peak memory exceeds SIZE (such as 512M or 4G), naming the parameter to lower",
+     [&](const std::string& v) { s.max_memory = df_l1_tool::parse_bytes("max-memory", v); }},
     {"seed", "S", "0", "random seed, written to the report (the stages are deterministic and draw no random numbers)",
      [&](const std::string& v) { s.seed = parse_integer("seed", v, 0, 2147483647L); }},
     {"quiet", "", "off", "no progress on stderr", [&](const std::string&) { s.quiet = true; }},
@@ -277,6 +281,7 @@ void write_voxels(const std::string& path, const DF::Voxel_grid<Kernel>& grid,
 int run_stages(const Settings& s)
 {
   df_l1_tool::Stage_clock clock(s.quiet);
+  const double max_memory = s.max_memory > 0 ? s.max_memory : DF::internal::available_memory_bytes();
   const auto cloud = clock.run("read", [&] {
     const Changed_input_report changed_input(s.input);
     return DF::read_point_cloud<Kernel>(s.input);
@@ -286,7 +291,8 @@ int run_stages(const Settings& s)
   // The library resolves the derived defaults; the report states what it used. The
   // resolution goes to the constructor, whose test of flat input depends on it.
   typedef CGAL::DF_L1_skeletonization<Kernel> Skeletonization;
-  Skeletonization skeletonization(points, params::voxel_resolution(s.parameters.voxel_resolution));
+  Skeletonization skeletonization(points, params::voxel_resolution(s.parameters.voxel_resolution,
+                                           params::max_memory(max_memory)));
   skeletonization.set_parameters(s.parameters);
   const auto stage = [&](const char* name, void (Skeletonization::*f)()) {
     clock.run(name, [&] {

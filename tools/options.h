@@ -6,6 +6,7 @@
 #ifndef DF_L1_TOOLS_OPTIONS_H
 #define DF_L1_TOOLS_OPTIONS_H
 
+#include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
@@ -51,6 +52,28 @@ inline long parse_integer(const std::string& option, const std::string& text, lo
     throw Usage_error("--" + option + " must be in [" + std::to_string(lo) + ", " + std::to_string(hi) +
                       "], got " + text);
   return x;
+}
+
+// A number of bytes: an integer or decimal number with an optional unit K, M, G or T
+// (powers of 1024; "KiB", "MB" and "B" are read alike).
+inline double parse_bytes(const std::string& option, const std::string& text)
+{
+  char* end = nullptr;
+  errno = 0;
+  const double x = std::strtod(text.c_str(), &end);
+  std::string unit(end);
+  for(char& c : unit)
+    c = char(std::toupper(static_cast<unsigned char>(c)));
+  if(unit.size() > 1 && unit.back() == 'B')
+    unit.pop_back();
+  if(unit.size() > 1 && unit.back() == 'I')
+    unit.pop_back();
+  const std::string units = "BKMGT";
+  const std::size_t power = unit.empty() ? 0 : units.find(unit);
+  if(text.empty() || end == text.c_str() || errno == ERANGE || !std::isfinite(x) || !(x > 0) || unit.size() > 1 ||
+     power == std::string::npos)
+    throw Usage_error("--" + option + " expects a positive size such as 512M, 4G or 1073741824, got '" + text + "'");
+  return x * std::pow(1024.0, double(power));
 }
 
 // Parses argv against the table; returns the positional arguments.

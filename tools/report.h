@@ -137,7 +137,8 @@ std::string report_json(const Settings& s, CGAL::DF_L1_skeletonization<Kernel, C
   // DF_L1_VERSION: set by the tool's CMake target, like the version --version prints.
   report.text("input", s.input).text("output", s.output).text("version", DF_L1_VERSION)
     .object("parameters", parameters).object("seconds", clock.times()).object("counts", counts)
-    .number("peak_memory_mib", peak_memory_mib());
+    .number("peak_memory_mib", peak_memory_mib())
+    .number("estimated_peak_memory_mib", skeletonization.estimated_peak_memory() / (1024.0 * 1024.0));
   return report.str();
 }
 

@@ -21,6 +21,7 @@
 #include <CGAL/DF_L1_skeleton/errors.h>
 #include <CGAL/DF_L1_skeleton/extract_initial_skeleton.h>
 #include <CGAL/DF_L1_skeleton/flag_sparse_outliers.h>
+#include <CGAL/DF_L1_skeleton/internal/memory_estimate.h>
 #include <CGAL/DF_L1_skeleton/internal/normalization.h>
 #include <CGAL/DF_L1_skeleton/internal/point_gap_cuts.h>
 #include <CGAL/DF_L1_skeleton/internal/point_range.h>
@@ -40,6 +41,7 @@
 #include <Eigen/Dense>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <iterator>
 #include <memory>
@@ -106,7 +108,9 @@ public:
   ///        `surface_noise` to `surface_noise()`
   /// \throws DF_L1::Invalid_input if the range is empty, holds a non-finite coordinate,
   ///         all its points coincide or lie on a plane (within a quarter of a voxel, RMS),
-  ///         their extent exceeds the largest `double`, or a parameter is out of range
+  ///         their extent exceeds the largest `double`, a parameter is out of range, or
+  ///         `estimated_peak_memory()` exceeds `max_memory` (the message names the
+  ///         parameter to lower)
   template <class PointRange, class NamedParameters = parameters::Default_named_parameters>
   explicit DF_L1_skeletonization(const PointRange& points, const NamedParameters& np = parameters::default_values())
   {
@@ -128,9 +132,13 @@ public:
     const CGAL::Bbox_3 box = DF_L1::internal::checked_bbox(points_, CGAL::Identity_property_map<Point>(), stage_name);
     diagonal_ = DF_L1::internal::diagonal(box);
     longest_side_ = DF_L1::internal::longest_side(box);
+    extent_ = {{box.xmax() - box.xmin(), box.ymax() - box.ymin(), box.zmax() - box.zmin()}};
     thickness_ = rms_distance_to_best_plane(points_);
     parameters_ = DF_L1::internal::resolve_parameters(np, stage_name);
+    set_max_memory(parameters::choose_parameter(parameters::get_parameter(np, internal_np::df_l1_max_memory),
+                                                DF_L1::internal::available_memory_bytes()));
     check_volume(parameters_.voxel_resolution);
+    DF_L1::internal::check_memory(memory_estimate(), max_memory_, parameters_.voxel_resolution, stage_name);
   }
 
   /// \name Stages
@@ -205,6 +213,7 @@ public:
   {
     if(raw_grid_)
       return;
+    DF_L1::internal::check_memory(memory_estimate(), max_memory_, parameters_.voxel_resolution, "voxelization");
     upsample();
     raw_grid_ = std::make_unique<Voxel_grid>(DF_L1::voxelize_point_set<ConcurrencyTag>(
       kept_and_added_points(), parameters::voxel_resolution(parameters_.voxel_resolution,
@@ -398,6 +407,20 @@ public:
   double upsampling_radius() const { return normalization_.to_input(internal_upsampling_radius()); }
   void set_upsampling_radius(double r) { set([&](DF_L1::Parameters& p) { p.upsampling_radius = r; }); } ///< \sa `upsampling_radius()`
   int voxel_resolution() const { return parameters_.voxel_resolution; } ///< V
+  /// the estimate of the peak memory of the whole skeletonization, in bytes: linear in
+  /// the points and in the voxels of the finest grid (their coefficients measured on the
+  /// tool, which holds a copy of the points too; \ref memory)
+  double estimated_peak_memory() const { return memory_estimate().bytes(); }
+  /// the limit of `estimated_peak_memory()`, in bytes (`max_memory`)
+  double max_memory() const { return max_memory_; }
+  /// Sets the limit of `estimated_peak_memory()` checked before the voxelization.
+  /// \throws DF_L1::Invalid_input if `bytes` is not > 0
+  void set_max_memory(double bytes)
+  {
+    if(!(bytes > 0))
+      throw DF_L1::Invalid_input("skeletonization: max_memory must be a positive number of bytes");
+    max_memory_ = bytes;
+  }
   void set_voxel_resolution(int V) { set([&](DF_L1::Parameters& p) { p.voxel_resolution = V; }); } ///< \sa `voxel_resolution()`
   /// s0, the size of the coarsest voxels before rounding (input units; default d_bb / 9)
   double initial_voxel_size() const { return normalization_.to_input(internal_initial_voxel_size()); }
@@ -573,6 +596,14 @@ private:
     return parameters_.upsampling_radius ? normalization_.to_internal(*parameters_.upsampling_radius)
                                          : DF_L1::internal::default_upsampling_radius(diagonal_, points_.size());
   }
+  DF_L1::internal::Memory_estimate memory_estimate() const
+  {
+    DF_L1::internal::Memory_estimate estimate;
+    estimate.points = double(points_.size());
+    estimate.voxels = DF_L1::internal::finest_voxel_count(extent_, parameters_.voxel_resolution);
+    return estimate;
+  }
+
   double internal_initial_voxel_size() const
   {
     return parameters_.initial_voxel_size ? normalization_.to_internal(*parameters_.initial_voxel_size)
@@ -615,6 +646,8 @@ private:
   std::vector<Point> points_;
   double diagonal_ = 0, longest_side_ = 0; // of the points' bounding box
   double thickness_ = 0;                   // rms_distance_to_best_plane() of the points
+  std::array<double, 3> extent_ = {{0, 0, 0}}; // of the bounding box of the points
+  double max_memory_ = 0;
   DF_L1::Parameters parameters_;
 
   std::vector<bool> sparse_outliers_, outliers_;

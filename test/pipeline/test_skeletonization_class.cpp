@@ -179,3 +179,33 @@ TEST_CASE("skeletonization class: extents beyond a double are refused; stage fun
     subnormal.emplace_back(1e-10 * p.x(), 1e-10 * p.y(), 1e-10 * p.z());
   CHECK_THROWS_WITH(Skeletonization(subnormal), Catch::Contains("smallest normal double") && Catch::Contains("cannot be represented"));
 }
+
+TEST_CASE("skeletonization class: the memory guard refuses a run beyond max_memory, naming what to lower", "[class][memory]")
+{
+  const std::vector<Point_3> points =
+    DF_L1_test::make_sample(DF_L1_test::shape_by_name("y_junction"), DF_L1_test::Variant::clean, 3000, 1).points;
+  const Skeletonization fine(points, CGAL::parameters::voxel_resolution(200));
+  const Skeletonization coarse(points, CGAL::parameters::voxel_resolution(100));
+  // the grid's share grows with the cube of the resolution
+  CHECK(fine.estimated_peak_memory() > 4 * coarse.estimated_peak_memory() - 3 * 16.0 * 1024 * 1024);
+  CHECK(coarse.max_memory() > 0); // the available memory by default
+  // a resolution of 2048 is refused before any allocation, naming the parameter
+  CHECK_THROWS_WITH(Skeletonization(points, CGAL::parameters::voxel_resolution(2048, CGAL::parameters::max_memory(2e9))),
+                    Catch::Contains("voxel_resolution 2048") && Catch::Contains("lower voxel_resolution") &&
+                      Catch::Contains("max_memory"));
+  // a limit below what the points need names the points
+  CHECK_THROWS_WITH(Skeletonization(points, CGAL::parameters::voxel_resolution(20, CGAL::parameters::max_memory(1e6))),
+                    Catch::Contains("3000 points") && Catch::Contains("thin the cloud"));
+  // a resolution raised later is checked before the voxelization
+  Skeletonization raised(points, CGAL::parameters::max_memory(coarse.estimated_peak_memory() * 1.01));
+  raised.set_voxel_resolution(400);
+  CHECK_THROWS_WITH(raised.voxelize(), Catch::Contains("voxelization") && Catch::Contains("lower voxel_resolution"));
+  raised.set_voxel_resolution(100);
+  CHECK_NOTHROW(raised.voxelize());
+  CHECK_THROWS_AS(raised.set_max_memory(0), DF::Invalid_input);
+  // the estimate does not depend on the scale of the cloud
+  std::vector<Point_3> scaled;
+  for(const Point_3& p : points)
+    scaled.emplace_back(1e6 * p.x(), 1e6 * p.y(), 1e6 * p.z());
+  CHECK(Skeletonization(scaled).estimated_peak_memory() == Approx(coarse.estimated_peak_memory()));
+}

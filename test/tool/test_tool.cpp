@@ -241,6 +241,8 @@ TEST_CASE("tool: bad usage gives exit status 2", "[tool]")
   for(const std::string& args : {std::string("--no-such-option"), std::string("--voxel-resolution 2"),
                                  std::string("--voxel-resolution abc"), std::string("--stage bogus"),
                                  std::string("--threads"), std::string("a b c"),
+                                 std::string("--max-memory 0"), std::string("--max-memory 4X"),
+                                 std::string("--max-memory abc"),
                                  "\"" + input + "\" out.xyz", "\"" + input + "\" out.obj --stage voxels",
                                  "\"" + input + "\" out.obj --preview p.png"})
   {
@@ -249,6 +251,27 @@ TEST_CASE("tool: bad usage gives exit status 2", "[tool]")
     CHECK(r.status == 2);
     CHECK_FALSE(r.err.empty());
   }
+}
+
+TEST_CASE("tool: the memory guard refuses a run beyond --max-memory at once, naming what to lower", "[tool][memory]")
+{
+  const Scratch scratch;
+  const std::string input = scratch.write("sphere.xyz", sphere_points(3000));
+  const std::string output = scratch.path("out.ply");
+  const Run refused = run_tool("\"" + input + "\" \"" + output + "\" --voxel-resolution 2048 --max-memory 2G", scratch);
+  CHECK(refused.status == 1);
+  CHECK(refused.err.find("lower voxel_resolution") != std::string::npos);
+  CHECK(refused.err.find("max_memory") != std::string::npos);
+  CHECK(refused.err.find("outlier_points...") == std::string::npos); // before any stage ran
+  CHECK_FALSE(fs::exists(output));
+  const Run ran = run_tool("\"" + input + "\" \"" + output + "\" --max-memory 1G --report \"" +
+                             scratch.path("r.json") + "\" --samples 500", scratch);
+  INFO(ran.err);
+  REQUIRE(ran.status == 0);
+  std::ifstream report(scratch.path("r.json"));
+  std::stringstream json;
+  json << report.rdbuf();
+  CHECK(json.str().find("\"estimated_peak_memory_mib\"") != std::string::npos);
 }
 
 TEST_CASE("tool: a valid input gives the skeleton, the preview and a complete report", "[tool]")

@@ -52,6 +52,7 @@ enum df_l1_thin_parts_t { df_l1_thin_parts };
 enum df_l1_occupied_depth_t { df_l1_occupied_depth };
 enum df_l1_open_crotches_t { df_l1_open_crotches };
 enum df_l1_surface_noise_t { df_l1_surface_noise };
+enum df_l1_max_memory_t { df_l1_max_memory };
 } // namespace internal_np
 
 namespace parameters {
@@ -119,6 +120,12 @@ CGAL_DF_L1_ADD_NAMED_PARAMETER(df_l1_occupied_depth, occupied_depth)
 /// spur pruning takes a branch for hair when it rises less than twice that above the
 /// rest, on top of its slack in voxels.
 CGAL_DF_L1_ADD_NAMED_PARAMETER(df_l1_surface_noise, surface_noise)
+/// \ingroup PkgDFL1SkeletonNamedParameters
+/// The most memory, in bytes, that `DF_L1_skeletonization` may use: the estimate of its
+/// peak (`DF_L1_skeletonization::estimated_peak_memory()`) beyond it throws
+/// `DF_L1::Invalid_input` naming the parameter to lower (default: the memory available
+/// when the object is constructed, `MemAvailable` on Linux; no limit elsewhere).
+CGAL_DF_L1_ADD_NAMED_PARAMETER(df_l1_max_memory, max_memory)
 /// \ingroup PkgDFL1SkeletonNamedParameters
 /// Whether the voxelization opens the interior voxels that see the exterior along 10 or
 /// more of the 26 grid directions: the crotches between close parts, narrower than the
