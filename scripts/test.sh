@@ -1,10 +1,64 @@
 #!/usr/bin/env bash
-# Builds everything with the tests and runs the whole suite; ends with ctest's summary.
+# The whole test suite, as CI runs it: everything built with the tests (build/), then
+# ctest. With --hardened, two more steps:
+#   2. the readers and the tool rebuilt with AddressSanitizer and UndefinedBehaviorSanitizer
+#      (build-sanitize/) and their tests run again (df_l1_test_io, df_l1_test_tool);
+#   3. a short fuzz run of each reader (scripts/fuzz.sh, clang, build-fuzz/).
+# Ends with a summary of the steps; exit status 1 if any failed.
+#
+#   scripts/test.sh                 step 1
+#   scripts/test.sh --hardened      the three steps
+#   scripts/test.sh --sanitize      every test executable under ASan+UBSan (build-sanitize/)
+#   options: --fuzz-seconds N (default 20 per reader)
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
-build="$root/build"
-"$root/scripts/install_dependencies.sh"
-cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DDF_L1_BUILD_TESTS=ON >/dev/null
-cmake --build "$build" -j2
-cd "$build"
-ctest --output-on-failure -j2
+mode=plain
+fuzz_seconds=20
+while [ $# -gt 0 ]; do
+  case "$1" in
+    --sanitize) mode=sanitize ;;
+    --hardened) mode=ci ;;
+    --fuzz-seconds) fuzz_seconds="$2"; shift ;;
+    -h|--help) sed -n '2,13p' "$0"; exit 0 ;;
+    *) echo "test.sh: unknown option $1" >&2; exit 2 ;;
+  esac
+  shift
+done
+if [ "$mode" = plain ]; then "$root/scripts/install_dependencies.sh"; else "$root/scripts/install_dependencies.sh" clang; fi
+# A sanitizer report fails the test that triggers it, with a stack trace.
+export ASAN_OPTIONS="${ASAN_OPTIONS:-detect_leaks=1}"
+export UBSAN_OPTIONS="${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}"
+
+sanitized_build() { # sanitized_build TARGET...
+  cmake -S "$root" -B "$root/build-sanitize" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DDF_L1_SANITIZE=ON \
+    -DDF_L1_BUILD_TESTS=ON -DDF_L1_BUILD_EXAMPLES=OFF -DDF_L1_BUILD_DOC=OFF >/dev/null
+  cmake --build "$root/build-sanitize" -j2 ${1:+--target "$@"}
+}
+
+if [ "$mode" = sanitize ]; then
+  sanitized_build
+  cd "$root/build-sanitize"
+  exec ctest --output-on-failure -j2 -E "df_l1_installed_package|df_l1_header_rules"
+fi
+
+status=()
+cmake -S "$root" -B "$root/build" -DCMAKE_BUILD_TYPE=Release -DDF_L1_BUILD_TESTS=ON >/dev/null
+cmake --build "$root/build" -j2
+if (cd "$root/build" && ctest --output-on-failure -j2); then status+=("tests: passed"); else status+=("tests: FAILED"); fi
+if [ "$mode" = ci ]; then
+  start=$SECONDS
+  if sanitized_build df_l1_skeleton df_l1_test_io df_l1_test_tool &&
+     (cd "$root/build-sanitize" && ctest --output-on-failure -j2 -R "df_l1_test_(io|tool)"); then
+    status+=("sanitized reader and tool tests (ASan+UBSan): passed in $((SECONDS - start)) s")
+  else
+    status+=("sanitized reader and tool tests (ASan+UBSan): FAILED")
+  fi
+  start=$SECONDS
+  if "$root/scripts/fuzz.sh" "$fuzz_seconds"; then
+    status+=("fuzzing, $fuzz_seconds s per reader: nothing found ($((SECONDS - start)) s)")
+  else
+    status+=("fuzzing, $fuzz_seconds s per reader: FAILED (findings in test/io/fuzz_regressions/)")
+  fi
+fi
+printf '%s\n' "${status[@]}"
+! printf '%s\n' "${status[@]}" | grep -q FAILED
