@@ -17,12 +17,112 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <limits>
 #include <type_traits>
 #include <utility>
 #include <vector>
 
 namespace CGAL {
 namespace DF_L1 {
+
+namespace internal {
+
+// The tests of flag_sparse_outliers() on the points of `grid` in cell order: every
+// per-point array is indexed by position in grid.sorted_points(), so that the tests of
+// neighbouring points read nearby memory (on a cloud given in random order, indexing by
+// input index made every neighbour a cache miss). `Index` holds a position: 32 bits
+// halve the neighbour lists of clouds below 4 billion points. Returns a flag per position.
+template <class Index, class ConcurrencyTag>
+std::vector<char> flag_sparse_outliers_in_cell_order(const Uniform_grid& grid, unsigned int k, double ratio,
+                                                     double local_ratio)
+{
+  const std::vector<std::array<double, 3>>& xyz = grid.sorted_points();
+  const std::size_t n = xyz.size();
+  // kth[s]: distance to the k-th nearest unflagged point; neighbours[s*k..]: those k points.
+  std::vector<double> kth(n);
+  std::vector<Index> neighbours(n * k);
+  std::vector<char> flagged(n, 0);
+  // `nearest` is scratch memory shared by the searches of a range (an allocation per
+  // search cost a tenth of the stage)
+  const auto measure = [&](std::size_t s, bool none_flagged, std::vector<std::pair<double, std::size_t>>& nearest) {
+    if(none_flagged) // the first pass: flagged is not read
+      grid.k_nearest_positions(xyz[s], k, [&](std::size_t t) { return t != s; }, nearest);
+    else
+      grid.k_nearest_positions(xyz[s], k, [&](std::size_t t) { return t != s && !flagged[t]; }, nearest);
+    for(std::size_t m = 0; m < k; ++m) // fewer than k unflagged points left: the point itself
+      neighbours[s * k + m] = Index(m < nearest.size() ? nearest[m].second : s);
+    kth[s] = nearest.empty() ? 0 : std::sqrt(nearest.back().first);
+  };
+  for_each_range<ConcurrencyTag>(n, [&](std::size_t begin, std::size_t end) {
+    std::vector<std::pair<double, std::size_t>> nearest;
+    for(std::size_t s = begin; s < end; ++s)
+      measure(s, true, nearest);
+  });
+  std::vector<double> sorted = kth;
+  std::nth_element(sorted.begin(), sorted.begin() + n / 2, sorted.end());
+  const double threshold = ratio * sorted[n / 2];
+  std::vector<double>().swap(sorted);
+
+  const auto is_outlier = [&](std::size_t s, std::vector<double>& around) {
+    if(kth[s] > threshold)
+      return true;
+    around.resize(k);
+    for(std::size_t m = 0; m < k; ++m)
+      around[m] = kth[neighbours[s * k + m]];
+    std::nth_element(around.begin(), around.begin() + k / 2, around.end());
+    return kth[s] > local_ratio * around[k / 2];
+  };
+  // Only the points that lost a neighbour to the last pass need a new test: removing
+  // points makes the distances of the others grow or stay, and a point whose own
+  // distance stays is not flagged by its neighbours' growing. Each pass decides on the
+  // distances of the previous one, whatever the order of the candidates.
+  // mark[s]: the verdict of the pass on s, then whether s is a candidate of the next
+  std::vector<char> mark(n, 0);
+  std::vector<std::size_t> candidates; // empty: all the points (the first pass)
+  std::size_t remaining = n;
+  for(;;)
+  {
+    const std::size_t count = candidates.empty() ? n : candidates.size();
+    for_each_range<ConcurrencyTag>(count, [&](std::size_t begin, std::size_t end) {
+      std::vector<double> around;
+      for(std::size_t c = begin; c < end; ++c)
+      {
+        const std::size_t s = candidates.empty() ? c : candidates[c];
+        mark[s] = is_outlier(s, around);
+      }
+    });
+    std::size_t added = 0;
+    for(std::size_t c = 0; c < count; ++c)
+    {
+      const std::size_t s = candidates.empty() ? c : candidates[c];
+      if(mark[s])
+        flagged[s] = 1, ++added;
+    }
+    remaining -= added;
+    if(added == 0 || remaining <= k + 1)
+      break;
+    for_each_range<ConcurrencyTag>(n, [&](std::size_t begin, std::size_t end) {
+      for(std::size_t s = begin; s < end; ++s)
+        mark[s] = !flagged[s] && std::any_of(neighbours.begin() + s * k, neighbours.begin() + (s + 1) * k,
+                                             [&](Index t) { return flagged[t] != 0; });
+    }, 1 << 14);
+    candidates.clear();
+    for(std::size_t s = 0; s < n; ++s)
+      if(mark[s])
+        candidates.push_back(s);
+    if(candidates.empty())
+      break;
+    for_each_range<ConcurrencyTag>(candidates.size(), [&](std::size_t begin, std::size_t end) {
+      std::vector<std::pair<double, std::size_t>> nearest;
+      for(std::size_t c = begin; c < end; ++c)
+        measure(candidates[c], false, nearest);
+    });
+  }
+  return flagged;
+}
+
+} // namespace internal
 
 /// \ingroup PkgDFL1SkeletonRef
 /// Flags the points that are far from the others. With d(p) the distance from p to its
@@ -76,81 +176,20 @@ std::vector<bool> flag_sparse_outliers(const PointRange& points, unsigned int k 
     throw Invalid_input("outlier points: k must be positive, ratio a finite number > 1 and local_ratio > 1");
   const auto point_map = NP_helper::get_const_point_map(points, np);
   internal::checked_bbox(points, point_map, "outlier points");
-  const std::vector<std::array<double, 3>> xyz = internal::to_xyz(points, point_map);
+  std::vector<std::array<double, 3>> xyz = internal::to_xyz(points, point_map);
   const std::size_t n = xyz.size();
   std::vector<bool> flags(n, false);
   if(n <= k + 1)
     return flags;
-
-  const internal::Uniform_grid grid(xyz, 0); // cells for k-nearest searches
-
-  // kth[i]: distance to the k-th nearest unflagged point; neighbours[i*k..]: those k points.
-  std::vector<double> kth(n);
-  std::vector<std::size_t> neighbours(n * k);
-  std::vector<char> flagged(n, 0); // a copy of flags that threads may read
-  // `nearest` is scratch memory shared by the searches of a range (an allocation per
-  // search cost a tenth of the stage)
-  const auto measure = [&](std::size_t i, bool none_flagged, std::vector<std::pair<double, std::size_t>>& nearest) {
-    if(none_flagged) // the first pass: flagged is not read (at random places, on a large cloud)
-      grid.k_nearest(xyz[i], k, [&](std::size_t j) { return j != i; }, nearest);
-    else
-      grid.k_nearest(xyz[i], k, [&](std::size_t j) { return j != i && !flagged[j]; }, nearest);
-    for(std::size_t m = 0; m < k; ++m) // fewer than k unflagged points left: the point itself
-      neighbours[i * k + m] = m < nearest.size() ? nearest[m].second : i;
-    kth[i] = nearest.empty() ? 0 : std::sqrt(nearest.back().first);
-  };
-  // in cell order: consecutive searches read the same cells
-  const std::vector<std::size_t>& query_order = grid.indices_by_cell();
-  internal::for_each_range<ConcurrencyTag>(n, [&](std::size_t begin, std::size_t end) {
-    std::vector<std::pair<double, std::size_t>> nearest;
-    for(std::size_t q = begin; q < end; ++q)
-      measure(query_order[q], true, nearest);
-  });
-  std::vector<double> sorted = kth;
-  std::nth_element(sorted.begin(), sorted.begin() + n / 2, sorted.end());
-  const double threshold = ratio * sorted[n / 2];
-
-  const auto is_outlier = [&](std::size_t i, std::vector<double>& around) {
-    if(kth[i] > threshold)
-      return true;
-    around.resize(k);
-    for(std::size_t m = 0; m < k; ++m)
-      around[m] = kth[neighbours[i * k + m]];
-    std::nth_element(around.begin(), around.begin() + k / 2, around.end());
-    return kth[i] > local_ratio * around[k / 2];
-  };
-  // Only the points that lost a neighbour to the last pass need a new test: removing
-  // points makes the distances of the others grow or stay, and a point whose own
-  // distance stays is not flagged by its neighbours' growing.
-  // first all the points, in cell order: the tests of neighbours read the same distances
-  std::vector<std::size_t> candidates = query_order;
-  std::vector<char> verdict(n, 0);
-  std::size_t remaining = n;
-  while(!candidates.empty())
-  {
-    internal::for_each_range<ConcurrencyTag>(candidates.size(), [&](std::size_t begin, std::size_t end) {
-      std::vector<double> around;
-      for(std::size_t c = begin; c < end; ++c)
-        verdict[candidates[c]] = is_outlier(candidates[c], around);
-    });
-    std::size_t added = 0;
-    for(std::size_t i : candidates)
-      if(verdict[i])
-        flags[i] = true, flagged[i] = 1, ++added;
-    remaining -= added;
-    if(added == 0 || remaining <= k + 1)
-      break;
-    candidates.clear();
-    for(std::size_t i = 0; i < n; ++i)
-      if(!flagged[i] && std::any_of(neighbours.begin() + i * k, neighbours.begin() + (i + 1) * k,
-                                    [&](std::size_t j) { return flagged[j] != 0; }))
-        candidates.push_back(i);
-    internal::for_each_range<ConcurrencyTag>(candidates.size(), [&](std::size_t begin, std::size_t end) {
-      std::vector<std::pair<double, std::size_t>> nearest;
-      for(std::size_t c = begin; c < end; ++c)
-        measure(candidates[c], false, nearest);
-    });
-  }
+  const internal::Uniform_grid grid(xyz, 0, ConcurrencyTag()); // cells for k-nearest searches
+  std::vector<std::array<double, 3>>().swap(xyz); // the grid has its own copy
+  const std::vector<char> flagged =
+      n <= std::numeric_limits<std::uint32_t>::max()
+          ? internal::flag_sparse_outliers_in_cell_order<std::uint32_t, ConcurrencyTag>(grid, k, ratio, local_ratio)
+          : internal::flag_sparse_outliers_in_cell_order<std::size_t, ConcurrencyTag>(grid, k, ratio, local_ratio);
+  const std::vector<std::size_t>& index = grid.indices_by_cell();
+  for(std::size_t s = 0; s < n; ++s)
+    flags[index[s]] = flagged[s] != 0;
   return flags;
 }
 

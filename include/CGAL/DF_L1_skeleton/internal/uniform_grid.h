@@ -3,6 +3,8 @@
 #ifndef CGAL_DF_L1_SKELETON_INTERNAL_UNIFORM_GRID_H
 #define CGAL_DF_L1_SKELETON_INTERNAL_UNIFORM_GRID_H
 
+#include <CGAL/DF_L1_skeleton/internal/parallel_for.h>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -28,7 +30,10 @@ class Uniform_grid
 public:
   // `cell_size` <= 0: cells for k-nearest searches, holding a few points each where
   // there are points (see coarsened_for_k_nearest()).
-  Uniform_grid(const std::vector<std::array<double, 3>>& points, double cell_size)
+  // With ConcurrencyTag = CGAL::Parallel_tag, the cells of the points and the sorted copy
+  // are computed in parallel (the same grid).
+  template <class ConcurrencyTag = CGAL::Sequential_tag>
+  Uniform_grid(const std::vector<std::array<double, 3>>& points, double cell_size, ConcurrencyTag = ConcurrencyTag())
   {
     std::array<double, 3> hi;
     lo_ = hi = points.empty() ? std::array<double, 3>{{0, 0, 0}} : points[0];
@@ -60,11 +65,12 @@ public:
       dims_[a] = int(std::floor((hi[a] - lo_[a]) / cell_)) + 1;
     start_.assign(std::size_t(dims_[0]) * dims_[1] * dims_[2] + 1, 0);
     std::vector<std::size_t> cell_of(points.size());
-    for(std::size_t i = 0; i < points.size(); ++i)
-    {
-      cell_of[i] = cell_index(cell_coordinates(points[i]));
-      ++start_[cell_of[i] + 1];
-    }
+    for_each_range<ConcurrencyTag>(points.size(), [&](std::size_t begin, std::size_t end) {
+      for(std::size_t i = begin; i < end; ++i)
+        cell_of[i] = cell_index(cell_coordinates(points[i]));
+    }, 1 << 14);
+    for(std::size_t c : cell_of)
+      ++start_[c + 1];
     for(std::size_t c = 1; c < start_.size(); ++c)
       start_[c] += start_[c - 1];
     order_.resize(points.size());
@@ -72,8 +78,10 @@ public:
     for(std::size_t i = 0; i < points.size(); ++i)
       order_[fill[cell_of[i]]++] = i;
     sorted_.resize(points.size());
-    for(std::size_t s = 0; s < points.size(); ++s)
-      sorted_[s] = points[order_[s]];
+    for_each_range<ConcurrencyTag>(points.size(), [&](std::size_t begin, std::size_t end) {
+      for(std::size_t s = begin; s < end; ++s)
+        sorted_[s] = points[order_[s]];
+    }, 1 << 14);
   }
 
   double cell_size() const { return cell_; }
@@ -123,6 +131,34 @@ public:
   void k_nearest(const std::array<double, 3>& q, std::size_t k, const Keep& keep,
                  std::vector<std::pair<double, std::size_t>>& nearest) const
   {
+    k_nearest_search<false>(q, k, keep, nearest);
+  }
+
+  // The same search in cell order: `keep` receives, and `nearest` holds, positions in
+  // sorted_points() instead of indices (ties still ordered by index, so the points found
+  // are those of k_nearest()). A caller that keeps its per-point data in cell order reads
+  // and writes it at nearby places instead of all over a large cloud.
+  template <class Keep>
+  void k_nearest_positions(const std::array<double, 3>& q, std::size_t k, const Keep& keep,
+                           std::vector<std::pair<double, std::size_t>>& nearest) const
+  {
+    k_nearest_search<true>(q, k, keep, nearest);
+  }
+
+  // The points in cell order: position s holds the point of index indices_by_cell()[s].
+  const std::vector<std::array<double, 3>>& sorted_points() const { return sorted_; }
+
+private:
+  template <bool positions, class Keep>
+  void k_nearest_search(const std::array<double, 3>& q, std::size_t k, const Keep& keep,
+                        std::vector<std::pair<double, std::size_t>>& nearest) const
+  {
+    // (squared distance, index) order; a position is compared by its index
+    const auto before = [&](const std::pair<double, std::size_t>& a, const std::pair<double, std::size_t>& b) {
+      if(a.first != b.first)
+        return a.first < b.first;
+      return positions ? order_[a.second] < order_[b.second] : a.second < b.second;
+    };
     if(k == 0)
     {
       nearest.clear();
@@ -157,11 +193,11 @@ public:
         d2 += (q[2] - p[2]) * (q[2] - p[2]);
         if(d2 > kth)
           continue;
-        const std::pair<double, std::size_t> point(d2, order_[s]);
-        if((found == k && !(point < nearest[k - 1])) || !keep(point.second))
+        const std::pair<double, std::size_t> point(d2, positions ? s : order_[s]);
+        if((found == k && !before(point, nearest[k - 1])) || !keep(point.second))
           continue;
         std::size_t m = found < k ? found++ : k - 1; // sorted into place from the back
-        for(; m > 0 && point < nearest[m - 1]; --m)
+        for(; m > 0 && before(point, nearest[m - 1]); --m)
           nearest[m] = nearest[m - 1];
         nearest[m] = point;
         if(found == k)
@@ -221,7 +257,6 @@ public:
     }
   }
 
-private:
   // The finest cells (about 4 per point over the bounding box) are mostly empty on a
   // sampled surface, and a search then reads a scattered cell table as large as the
   // cloud: memory-bound, and slower per point as the cloud grows (20 s for 10M points
