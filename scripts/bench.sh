@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Runs the benchmark suite and writes benchmark/REPORT.md (tables, SVG plots, machine).
 #
-#   scripts/bench.sh                  the whole suite (about 15 minutes on 2 cores)
+#   scripts/bench.sh                  the whole suite (about 20 minutes on 2 cores)
 #   scripts/bench.sh --quick          a short run (under a minute) compared with
 #                                     benchmark/quick_baseline.tsv: warns about every
 #                                     stage more than 25 % slower; never fails on speed
@@ -93,9 +93,11 @@ for case in stick_figure:clean torus:clean branching_tree:clean many_armed:clean
   [ "$variant" = clean ] && run "headline/$shape-$variant" mesh_mcf "$file" --shape "$shape"
 done
 # Scaling with the number of points, the voxel resolution and the number of samples.
-for n in 10000 30000 100000 300000 1000000; do
-  run "points/$n" df_l1 "$(input stick_figure clean $n)" --shape stick_figure
+# 3M and 10M points once each (a 10M run takes half a minute; issue 21's 10M row).
+for n in 10000 30000 100000 300000 1000000 3000000 10000000; do
+  run "points/$n" df_l1 "$(input stick_figure clean $n)" --shape stick_figure $([ $n -ge 3000000 ] && echo --runs 1)
 done
+run "points/10000000-noise" df_l1 "$(input stick_figure noise 10000000)" --shape stick_figure --variant noise --runs 1
 for v in 64 100 160 256; do
   run "resolution/$v" df_l1 "$(input stick_figure clean 35000)" --shape stick_figure --resolution $v
 done
