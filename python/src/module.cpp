@@ -697,6 +697,8 @@ PYBIND11_MODULE(_df_l1_skeleton, m)
       throw DF::Invalid_input(std::string(e.what()).substr(2)); // without the option's "--"
     }
   }, py::arg("text"));
+  m.def("_check_parameters", [](const std::vector<std::pair<std::string, std::string>>& given) { parameters_from(given); },
+        py::arg("parameters"));
   m.def("keep_large_buffers_on_heap", &df_l1_tool::keep_large_buffers_on_heap,
         "Keeps large buffers on the heap for reuse (glibc mallopt), as the tool does; a process setting.");
 
