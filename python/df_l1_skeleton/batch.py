@@ -146,6 +146,12 @@ class _Progress:
         self.counts = {"ok": 0, "skipped": 0, "failed": 0}
         self.start = self.last = time.monotonic()
         self.tty = enabled and sys.stderr.isatty()
+        self.cluster_seconds: Optional[float] = None
+
+    def started_cluster(self) -> None:
+        """From now on the time counts the tasks only; the final line gives both."""
+        now = time.monotonic()
+        self.cluster_seconds, self.start = now - self.start, now
 
     def update(self, status: str, final: bool = False) -> None:
         if status:
@@ -159,6 +165,8 @@ class _Progress:
         done = sum(self.counts.values())
         line = (f"df_l1_skeleton.batch: {done}/{self.total} files ({self.counts['ok']} ok, "
                 f"{self.counts['skipped']} skipped, {self.counts['failed']} failed), {now - self.start:.1f} s")
+        if final and self.cluster_seconds is not None:
+            line += f" (after {self.cluster_seconds:.1f} s to start the cluster)"
         sys.stderr.write(("\r" + line + ("\n" if final else "")) if self.tty else line + "\n")
         sys.stderr.flush()
 
@@ -234,20 +242,9 @@ def run_batch(inputs: Sequence[str], output_dir: str, *, client=None, scheduler:
     os.makedirs(output_dir, exist_ok=True)
     output_dir = os.path.abspath(output_dir)
     started = time.time()
-    own_cluster = None
-    if client is None:
-        if scheduler:
-            client = distributed.Client(scheduler)
-        else:
-            workers = workers or os.cpu_count() or 1
-            own_cluster = distributed.LocalCluster(n_workers=workers, threads_per_worker=1, processes=True,
-                                                   dashboard_address=":0")
-            client = distributed.Client(own_cluster)
-        own_client = client
-    else:
-        own_client = None
     if threads is None:
-        threads = max(1, (os.cpu_count() or 1) // (workers or 1)) if own_cluster else 1
+        local = client is None and not scheduler
+        threads = max(1, (os.cpu_count() or 1) // (workers or os.cpu_count() or 1)) if local else 1
     tasks = [{
         "input": path,
         "output": os.path.join(output_dir, f"{name}.{format}"),
@@ -258,10 +255,29 @@ def run_batch(inputs: Sequence[str], output_dir: str, *, client=None, scheduler:
     } for path, name in zip(inputs, names)]
     records: List[Optional[Dict[str, Any]]] = [None] * len(tasks)
     bar = _Progress(len(tasks), progress)
+    # The files already done are skipped here when this process sees them (a shared
+    # file system), without a task; the tasks check again (a worker may see them when
+    # this process does not, and a task may run again after its worker died).
+    for i, task in enumerate(tasks):
+        report = None if force else _finished(task)
+        if report is not None:
+            records[i] = _record(task, "skipped", report)
+            records[i]["worker"] = None
+            bar.update("skipped")
+    todo = [i for i, r in enumerate(records) if r is None]
+    own_cluster = own_client = None
     try:
-        futures = [client.submit(process_file, t, key=f"df_l1_skeleton-{i}-{names[i]}", pure=False)
-                   for i, t in enumerate(tasks)]
-        index = {f.key: i for i, f in enumerate(futures)}
+        if todo and client is None:
+            if scheduler:
+                client = own_client = distributed.Client(scheduler)
+            else:
+                own_cluster = distributed.LocalCluster(n_workers=workers or os.cpu_count() or 1, threads_per_worker=1,
+                                                       processes=True, dashboard_address=":0")
+                client = own_client = distributed.Client(own_cluster)
+            bar.started_cluster()
+        futures = [client.submit(process_file, tasks[i], key=f"df_l1_skeleton-{i}-{names[i]}", pure=False)
+                   for i in todo]
+        index = {f.key: i for i, f in zip(todo, futures)}
         for future in distributed.as_completed(futures):
             i = index[future.key]
             try:
