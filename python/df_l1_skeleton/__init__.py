@@ -65,6 +65,10 @@ __all__ = [
     "__version__",
 ]
 
+for _class in (PointCloud, Skeleton, ReadError, WriteError):
+    _class.__module__ = __name__  # as help() and tracebacks show them
+del _class
+
 #: The library's parameters by name: each a dict with ``name``, ``stage`` (the first
 #: stage that reads it), ``kind`` (integer, real, boolean, choice), ``range``,
 #: ``choices``, ``default`` (None when it derives from the input), ``default_text``

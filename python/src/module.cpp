@@ -34,6 +34,7 @@
 #include <cstdint>
 #include <cstring>
 #include <memory>
+#include <mutex>
 #include <string>
 #include <utility>
 #include <vector>
@@ -338,7 +339,7 @@ public:
     {
       if(!points_)
         throw DF::Invalid_input("this skeleton has no input points to label");
-      py::gil_scoped_release release;
+      // under the GIL, which orders two threads asking at once (one pass over the points)
       segmentation_ = std::make_unique<DF::Point_segmentation>(
         DF::segment_points(index_range(*points_), *graph_, params::point_map(Input_point_map{points_.get()})));
     }
@@ -518,8 +519,9 @@ void write_skeleton(const std::string& path, Skeleton& skeleton, const std::stri
     throw DF::Invalid_input("this skeleton has no report: it was not made by skeletonize()");
   if(!segmentation.empty() && !skeleton.points())
     throw DF::Invalid_input("this skeleton has no input points to label");
-  py::gil_scoped_release release;
   auto clock = std::make_unique<df_l1_tool::Stage_clock>(run ? run->clock : df_l1_tool::Stage_clock(true));
+  {
+  py::gil_scoped_release release;
   DF::Atomic_file_group outputs;
   clock->run("write", [&] {
     DF::write_skeleton(path, skeleton.graph());
@@ -540,7 +542,8 @@ void write_skeleton(const std::string& path, Skeleton& skeleton, const std::stri
     DF::write_file_atomically(report, [&](std::ostream& os) { os << text << "\n"; });
   }
   outputs.commit();
-  if(run)
+  }
+  if(run) // with the GIL: the report of the skeleton reads these
   {
     run->written_clock = std::move(clock);
     run->written_output = path;
@@ -568,17 +571,20 @@ public:
   }
 
   // Runs a member of the class without the GIL, in the arena of `threads`.
+  // One call at a time: the GIL is released first, then the object locked.
   template <class F>
   auto call(F f)
   {
     py::gil_scoped_release release;
+    const std::lock_guard<std::mutex> lock(mutex_);
     return in_arena(threads_, [&] { return f(*skeletonization_); });
   }
-  Skeletonization& get() { return *skeletonization_; }
   const std::shared_ptr<const Input_points>& points() const { return points_; }
 
   void set(const std::string& name, const std::string& text)
   {
+    py::gil_scoped_release release;
+    const std::lock_guard<std::mutex> lock(mutex_);
     DF::Parameters p = skeletonization_->parameters();
     DF::set_parameter(p, name, text);
     skeletonization_->set_parameters(p);
@@ -588,22 +594,22 @@ private:
   std::shared_ptr<const Input_points> points_;
   int threads_ = 0;
   std::unique_ptr<Skeletonization> skeletonization_;
+  std::mutex mutex_;
 };
 
 // The value a getter of the class returns for a parameter, as Python sees it.
 py::object parameter_value(Stagewise& w, const std::string& name)
 {
-  Skeletonization& s = w.get();
   const DF::Parameter_info& info = DF::parameter_info(name);
   if(name == "upsampling_radius")
     return py::float_(w.call([](Skeletonization& x) { return x.upsampling_radius(); }));
   if(name == "initial_voxel_size")
-    return py::float_(s.initial_voxel_size());
+    return py::float_(w.call([](Skeletonization& x) { return x.initial_voxel_size(); }));
   if(name == "outlier_component_size")
     return py::int_(w.call([](Skeletonization& x) { return x.outlier_component_size(); }));
   if(name == "initial_support_radius")
     return py::float_(w.call([](Skeletonization& x) { return x.initial_support_radius(); }));
-  const double x = info.read(s.parameters());
+  const double x = info.read(w.call([](Skeletonization& x) { return x.parameters(); }));
   switch(info.kind)
   {
   case DF::Parameter_kind::INTEGER: return py::int_(static_cast<long long>(x));
@@ -761,10 +767,10 @@ PYBIND11_MODULE(_df_l1_skeleton, m)
         "Runs one support-radius stage of the contraction; False, running nothing, once it has converged.");
   w.def("get_parameter", &parameter_value, py::arg("name"));
   w.def("set_parameter", &Stagewise::set, py::arg("name"), py::arg("text"));
-  w.def_property_readonly("number_of_input_points", [](Stagewise& self) { return self.get().number_of_input_points(); });
-  w.def_property_readonly("bbox_diagonal", [](Stagewise& self) { return self.get().bbox_diagonal(); });
-  w.def_property_readonly("estimated_peak_memory", [](Stagewise& self) { return self.get().estimated_peak_memory(); });
-  w.def_property_readonly("max_memory", [](Stagewise& self) { return self.get().max_memory(); });
+  w.def_property_readonly("number_of_input_points", [](Stagewise& self) { return self.call([](Skeletonization& s) { return s.number_of_input_points(); }); });
+  w.def_property_readonly("bbox_diagonal", [](Stagewise& self) { return self.call([](Skeletonization& s) { return s.bbox_diagonal(); }); });
+  w.def_property_readonly("estimated_peak_memory", [](Stagewise& self) { return self.call([](Skeletonization& s) { return s.estimated_peak_memory(); }); });
+  w.def_property_readonly("max_memory", [](Stagewise& self) { return self.call([](Skeletonization& s) { return s.max_memory(); }); });
   w.def_property_readonly("surface_noise", [](Stagewise& self) { return self.call([](Skeletonization& s) { return s.surface_noise(); }); });
   w.def_property_readonly("residual_growth", [](Stagewise& self) { return self.call([](Skeletonization& s) { return s.residual_growth(); }); });
   w.def_property_readonly("denoised", [](Stagewise& self) { return self.call([](Skeletonization& s) { return s.denoised(); }); });
