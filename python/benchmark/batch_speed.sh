@@ -7,6 +7,7 @@
 #   2. the tool, one file after the other, --threads 1
 #   3. python3 -m df_l1_skeleton.batch --workers 2 --threads 1 (with and without the cluster's start)
 #   4. the same batch run again (every file skipped: the cost of resuming)
+#   5. the batch on 1 worker of 1 thread (one file after the other, in the same engine)
 set -euo pipefail
 build="$(cd "$1" && pwd)"; n="${2:-40}"; points="${3:-20000}"
 python="${PYTHON:-/usr/bin/python3}"
@@ -20,6 +21,7 @@ for ((i = 0; i < n; i++)); do
 done
 seconds() { local start=$(date +%s.%N); "$@" >/dev/null; echo "$(date +%s.%N) - $start" | bc; }
 batch() { "$python" -m df_l1_skeleton.batch "$work/clouds" "$work/batch" --workers 2 --threads 1 2>"$work/progress"; }
+batch1() { "$python" -m df_l1_skeleton.batch "$work/clouds" "$work/batch1" --workers 1 --threads 1 2>"$work/progress1"; }
 sequential() { # sequential OUT [tool options]
   local out="$1"; shift; mkdir -p "$out"
   for f in "$work"/clouds/*.xyz; do
@@ -33,6 +35,8 @@ t3=$(seconds batch)
 # the batch's own last progress line: the seconds from the first task to the last, cluster start excluded
 t3_tasks=$(tail -1 "$work/progress" | sed 's/.*), \([0-9.]*\) s (after.*/\1/')
 t4=$(seconds batch)
+t5=$(seconds batch1)
+t5_tasks=$(tail -1 "$work/progress1" | sed 's/.*), \([0-9.]*\) s (after.*/\1/')
 same=0
 for f in "$work"/seq_1/*.obj; do cmp -s "$f" "$work/batch/$(basename "$f")" && same=$((same + 1)); done
 printf '%d clouds of %d points (%s)\n' "$n" "$points" "$(nproc) cores, $(uptime | sed 's/.*load average: //') load"
@@ -43,4 +47,6 @@ printf 'batch, 2 workers x 1 thread          : %6.2f s  (%.2fx the first, %.2fx 
 printf '  of which the tasks (cluster start excluded): %6.2f s  (%.2fx, %.2fx)\n' "$t3_tasks" \
   "$(echo "$t1 / $t3_tasks" | bc -l)" "$(echo "$t2 / $t3_tasks" | bc -l)"
 printf 'batch again, every file skipped      : %6.2f s\n' "$t4"
+printf 'batch, 1 worker x 1 thread (the same files one after the other in Dask): %6.2f s, tasks %6.2f s (2 workers: %.2fx, %.2fx)\n' \
+  "$t5" "$t5_tasks" "$(echo "$t5 / $t3" | bc -l)" "$(echo "$t5_tasks / $t3_tasks" | bc -l)"
 printf 'skeletons equal to the tool'"'"'s (--threads 1): %d of %d\n' "$same" "$n"

@@ -3,7 +3,7 @@
 """The cost of the Python call against the C++ call on one cloud (doc/python.md).
 
     PYTHONPATH=build/python /usr/bin/python3 python/benchmark/call_overhead.py \
-        build/bin/df_l1_python_call_benchmark CLOUD [PAIRS]
+        build/bin/df_l1_python_call_benchmark CLOUD [PAIRS] [--python-default-malloc]
 
 The C++ benchmark runs in a process of its own (the tool's malloc settings, the stages
 as the tool runs them), one call per request; this process makes the Python call,
@@ -25,7 +25,9 @@ import df_l1_skeleton as dfl1
 
 benchmark, cloud = sys.argv[1], sys.argv[2]
 pairs = int(sys.argv[3]) if len(sys.argv) > 3 else 30
-dfl1.keep_large_buffers_on_heap()
+python_heap = "--python-default-malloc" not in sys.argv  # else only the C++ side has the tool's settings
+if python_heap:
+    dfl1.keep_large_buffers_on_heap()
 points = np.array(dfl1.read_point_cloud(cloud).points)
 cpp_process = subprocess.Popen([benchmark, cloud, "0", "heap"], stdin=subprocess.PIPE, stdout=subprocess.PIPE,
                                stderr=subprocess.DEVNULL, text=True)
@@ -57,7 +59,8 @@ for i in range(pairs + 1):
         ratios.append(p / c)
 cpp_process.stdin.close()
 cpp_process.wait()
-print(f"{cloud}: {len(points)} points, skeleton of {len(skeleton.vertices)} vertices, {pairs} pairs")
+print(f"{cloud}: {len(points)} points, skeleton of {len(skeleton.vertices)} vertices, {pairs} pairs"
+      + ("" if python_heap else ", Python with glibc's default malloc settings"))
 print(f"C++ call:    median {statistics.median(cpp):.4f} s, min {min(cpp):.4f} s")
 print(f"Python call: median {statistics.median(py):.4f} s, min {min(py):.4f} s")
 print(f"Python / C++: median of the pair ratios {statistics.median(ratios):.3f} "
