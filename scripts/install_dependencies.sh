@@ -4,6 +4,8 @@
 # Uses apt-get directly as root, sudo otherwise, and says what it does.
 set -euo pipefail
 packages=(cmake g++ make libcgal-dev libeigen3-dev libboost-graph-dev libtbb-dev catch2 doxygen librsvg2-bin "$@")
+# the Python module and its tests (python/; for /usr/bin/python3)
+packages+=(python3-dev python3-pybind11 python3-numpy python3-pytest python3-dask python3-distributed python3-networkx python3-matplotlib)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -45,6 +45,12 @@ status=()
 cmake -S "$root" -B "$root/build" -DCMAKE_BUILD_TYPE=Release -DDF_L1_BUILD_TESTS=ON >/dev/null
 cmake --build "$root/build" -j2
 if (cd "$root/build" && ctest --output-on-failure -j2); then status+=("tests: passed"); else status+=("tests: FAILED"); fi
+# The Python module's pytest suite is ctest's df_l1_python when the module and pytest were found.
+if (cd "$root/build" && ctest -N -R '^df_l1_python$' | grep -q 'Total Tests: 1'); then
+  status+=("python: the module's pytest suite ran in the tests above (df_l1_python)")
+else
+  status+=("python: skipped, pybind11, numpy or pytest not found for $(sed -n "s/^Python3_EXECUTABLE:[A-Z]*=//p" "$root/build/CMakeCache.txt" | head -1) (Debian packages: scripts/install_dependencies.sh)")
+fi
 if [ "$mode" = ci ]; then
   start=$SECONDS
   if sanitized_build df_l1_skeleton df_l1_test_io df_l1_test_tool &&
