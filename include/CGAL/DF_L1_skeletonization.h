@@ -256,6 +256,8 @@ public:
   /// The memory estimate is refined from the distance field (`estimated_peak_memory()`)
   /// and checked against `max_memory` before the thinning, and again before the graph
   /// repairs (joining pieces, adding missing branches) when they run.
+  /// \throws DF_L1::Invalid_input if the refined estimate exceeds `max_memory` (the
+  ///         message names the parameter to lower); the stages before it keep their results
   void extract_initial_skeleton()
   {
     if(initial_)
@@ -633,7 +635,8 @@ private:
     counts.voxels = double(field_->size());
     counts.interior_voxels =
       double(std::count(field_->labels.begin(), field_->labels.end(), DF_L1::Voxel_label::INTERIOR));
-    counts.input_unit_copies = grid_in_input_units_ != nullptr || field_in_input_units_ != nullptr;
+    counts.grid_copy = grid_in_input_units_ != nullptr;
+    counts.field_copy = field_in_input_units_ != nullptr;
     counts.denoised = denoised_;
     counts.repair = repairs;
     refined_memory_ = std::make_unique<DF_L1::internal::Memory_estimate>(DF_L1::internal::refined_memory_estimate(counts));

@@ -80,26 +80,33 @@ struct Voxel_stage_counts
   double added_points = 0;    // points added by the upsampling
   double voxels = 0;          // voxels of the finest grid
   double interior_voxels = 0; // of the distance field
-  bool input_unit_copies = false; // the caller took the grid and the field in input units
+  bool grid_copy = false;     // the caller took the grid in input units
+  bool field_copy = false;    // the caller took the distance field in input units
   bool denoised = false;      // occupied depth instead of the thin-part search
   bool repair = false;        // the graph repairs run (pieces joined, missing branches)
 };
 
-// Bytes held per voxel, by the arrays that hold them (doc/memory.md, "The refined
-// estimate"). Held from the voxelization to the end: the labels of the raw grid and of
+// Bytes held per voxel, by the arrays that hold them (doc/memory.md, "Where the memory
+// goes"). Held from the voxelization to the end: the labels of the raw grid and of
 // the grid without outliers (1 + 1), the distance field (labels 1, distances 4); the
 // copies in input units when the caller asked for them (the tool does): grid 1, field 5.
 constexpr double memory_held_bytes_per_voxel = 7;
-constexpr double memory_copy_bytes_per_voxel = 6;
+constexpr double memory_grid_copy_bytes_per_voxel = 1;
+constexpr double memory_field_copy_bytes_per_voxel = 5;
 // The initial skeleton, phase by phase, per voxel of the grid (every array is
 // field.size() long):
-// - thin-part path (clouds that were not smoothed): the ridge voxels and the shape
-//   volume on one thread (in, outside, closed, curves: 4) beside the thin-part search on
-//   the other (power 4, thick 1, occupied 1, thin voxels 1, solid 1, beyond 4, depth 4,
-//   near 4: 20);
-constexpr double memory_thin_search_bytes_per_voxel = 24;
-// - occupied-depth path (smoothed clouds): the occupied depth (4) and its transform (4);
-constexpr double memory_occupied_search_bytes_per_voxel = 8;
+// - the search, thin-part path (clouds that were not smoothed): the ridge test on one
+//   thread (its box sums in double 8, in 1; then the shape volume: in, outside, closed)
+//   beside the thin-part search on the other (power 4, thick 1, occupied 1, thin voxels
+//   1, solid 1, beyond 4, depth 4, near 4: 20);
+constexpr double memory_thin_search_bytes_per_voxel = 29;
+// - the search, occupied-depth path (smoothed clouds): the occupied depth (4), then the
+//   ridge test (box sums 8, in 1);
+constexpr double memory_occupied_search_bytes_per_voxel = 13;
+// - in every phase, the ridge voxels found: 32 B each (index 8, centre 24) in vectors
+//   grown by doubling (1.5 times that on average), up to a third of the interior voxels
+//   (1 to 33 % on the inputs we measured): 16 B per interior voxel;
+constexpr double memory_ridge_bytes_per_interior_voxel = 16;
 // - the thinning: in 1, curves 1, depth 4, the memo of curve ends 1, the thinning state
 //   1, and the thin parts (voxels 1, solid 1, depth 4) or the occupied depth (4);
 constexpr double memory_thin_thinning_bytes_per_voxel = 14;
@@ -127,11 +134,13 @@ constexpr double memory_held_bytes_per_added_point = 24;
 // skeleton (the points and voxels held, and the phase's own arrays).
 inline Memory_estimate refined_memory_estimate(const Voxel_stage_counts& c)
 {
-  const double held = memory_held_bytes_per_voxel + (c.input_unit_copies ? memory_copy_bytes_per_voxel : 0);
+  const double held = memory_held_bytes_per_voxel + (c.grid_copy ? memory_grid_copy_bytes_per_voxel : 0) +
+                      (c.field_copy ? memory_field_copy_bytes_per_voxel : 0);
   const double search = c.denoised ? memory_occupied_search_bytes_per_voxel : memory_thin_search_bytes_per_voxel;
   const double thinning = c.denoised ? memory_occupied_thinning_bytes_per_voxel : memory_thin_thinning_bytes_per_voxel;
   const double repair = c.repair ? (c.denoised ? memory_occupied_repair_bytes_per_voxel : memory_thin_repair_bytes_per_voxel) : 0;
-  const double stage = (std::max)({search * c.voxels,
+  const double stage = memory_ridge_bytes_per_interior_voxel * c.interior_voxels +
+                       (std::max)({search * c.voxels,
                                    thinning * c.voxels + memory_thinning_bytes_per_interior_voxel * c.interior_voxels,
                                    repair * c.voxels});
   const double held_points = memory_held_bytes_per_point * c.points + memory_held_bytes_per_added_point * c.added_points;
