@@ -96,10 +96,12 @@ constexpr double memory_field_copy_bytes_per_voxel = 5;
 // The initial skeleton, phase by phase, per voxel of the grid (every array is
 // field.size() long):
 // - the search, thin-part path (clouds that were not smoothed): the ridge test on one
-//   thread (its box sums in double 8, in 1; then the shape volume: in, outside, closed)
-//   beside the thin-part search on the other (power 4, thick 1, occupied 1, thin voxels
-//   1, solid 1, beyond 4, depth 4, near 4: 20);
-constexpr double memory_thin_search_bytes_per_voxel = 29;
+//   thread (its box sums in double 8, in 1), then the shape volume (in, outside, closed,
+//   with the ridge flags: 4), beside the thin-part search on the other (power 4, thick
+//   1, occupied 1, thin voxels 1, solid 1: 8 from its start; then beyond 4, depth 4,
+//   near 4: 20); the thin-part search takes most of the stage's time, and the box sums
+//   are gone before its transforms: max(9 + 8, 4 + 20) (also the sequential order);
+constexpr double memory_thin_search_bytes_per_voxel = 24;
 // - the search, occupied-depth path (smoothed clouds): the occupied depth (4), then the
 //   ridge test (box sums 8, in 1);
 constexpr double memory_occupied_search_bytes_per_voxel = 13;
