@@ -138,7 +138,8 @@ std::string report_json(const Settings& s, CGAL::DF_L1_skeletonization<Kernel, C
   report.text("input", s.input).text("output", s.output).text("version", DF_L1_VERSION)
     .object("parameters", parameters).object("seconds", clock.times()).object("counts", counts)
     .number("peak_memory_mib", peak_memory_mib())
-    .number("estimated_peak_memory_mib", skeletonization.estimated_peak_memory() / (1024.0 * 1024.0));
+    .number("estimated_peak_memory_mib", skeletonization.estimated_peak_memory() / (1024.0 * 1024.0))
+    .number("initial_estimated_peak_memory_mib", skeletonization.initial_estimated_peak_memory() / (1024.0 * 1024.0));
   return report.str();
 }
 

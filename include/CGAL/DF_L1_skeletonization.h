@@ -138,7 +138,7 @@ public:
     set_max_memory(parameters::choose_parameter(parameters::get_parameter(np, internal_np::df_l1_max_memory),
                                                 DF_L1::internal::available_memory_bytes()));
     check_volume(parameters_.voxel_resolution);
-    DF_L1::internal::check_memory(memory_estimate(), max_memory_, parameters_.voxel_resolution, stage_name);
+    DF_L1::internal::check_memory(initial_memory_estimate(), max_memory_, parameters_.voxel_resolution, stage_name);
   }
 
   /// \name Stages
@@ -213,7 +213,7 @@ public:
   {
     if(raw_grid_)
       return;
-    DF_L1::internal::check_memory(memory_estimate(), max_memory_, parameters_.voxel_resolution, "voxelization");
+    DF_L1::internal::check_memory(initial_memory_estimate(), max_memory_, parameters_.voxel_resolution, "voxelization");
     upsample();
     raw_grid_ = std::make_unique<Voxel_grid>(DF_L1::voxelize_point_set<ConcurrencyTag>(
       kept_and_added_points(), parameters::voxel_resolution(parameters_.voxel_resolution,
@@ -252,15 +252,23 @@ public:
   /// they cross a gap between two parts that the points show and the voxels did not
   /// (parts 1 or 2 voxels apart), and assigns every non-outlier input point to its
   /// nearest vertex of the graph.
+  ///
+  /// The memory estimate is refined from the distance field (`estimated_peak_memory()`)
+  /// and checked against `max_memory` before the thinning, and again before the graph
+  /// repairs (joining pieces, adding missing branches) when they run.
+  /// \throws DF_L1::Invalid_input if the refined estimate exceeds `max_memory` (the
+  ///         message names the parameter to lower); the stages before it keep their results
   void extract_initial_skeleton()
   {
     if(initial_)
       return;
     compute_distance_field();
-    initial_ = std::make_unique<Initial_skeleton>(DF_L1::extract_initial_skeleton<ConcurrencyTag>(
+    refine_memory_estimate(false, "initial skeleton");
+    initial_ = std::make_unique<Initial_skeleton>(DF_L1::internal::extract_initial_skeleton<ConcurrencyTag>(
       *field_, parameters::thinning_coefficient(parameters_.thinning_coefficient,
                parameters::spur_length_ratio(parameters_.spur_length_ratio, parameters::thin_parts(!denoised_, parameters::occupied_depth(denoised_,
-               parameters::surface_noise(surface_noise_)))))));
+               parameters::surface_noise(surface_noise_))))),
+      [this] { refine_memory_estimate(true, "initial skeleton (graph repairs)"); }));
     // The cycles through gaps between parts that the voxels could not separate are cut
     // where the points show the gap (`internal::cut_point_gaps()`); the stubs that are
     // left go through the spur pruning again.
@@ -407,13 +415,22 @@ public:
   double upsampling_radius() const { return normalization_.to_input(internal_upsampling_radius()); }
   void set_upsampling_radius(double r) { set([&](DF_L1::Parameters& p) { p.upsampling_radius = r; }); } ///< \sa `upsampling_radius()`
   int voxel_resolution() const { return parameters_.voxel_resolution; } ///< V
-  /// the estimate of the peak memory of the whole skeletonization, in bytes: linear in
-  /// the points and in the voxels of the finest grid (their coefficients measured on the
-  /// tool, which holds a copy of the points too; \ref memory)
+  /// the best estimate so far of the peak memory of the whole skeletonization, in bytes
+  /// (\ref memory): until the initial skeleton starts, `initial_estimated_peak_memory()`;
+  /// from then on, the estimate refined from the distance field (the voxels of the grid as
+  /// built, its interior voxels, whether the cloud was smoothed), and once the initial
+  /// skeleton knows it, whether its graph repairs run. Changing a parameter of a stage
+  /// up to the initial skeleton goes back to the initial estimate.
   double estimated_peak_memory() const { return memory_estimate().bytes(); }
+  /// the estimate of the peak memory from the parameters and the number of points
+  /// alone, in bytes, as the constructor checks it: linear in the points and in the
+  /// voxels of the finest grid (their coefficients measured on the tool, which holds a
+  /// copy of the points too; \ref memory)
+  double initial_estimated_peak_memory() const { return initial_memory_estimate().bytes(); }
   /// the limit of `estimated_peak_memory()`, in bytes (`max_memory`)
   double max_memory() const { return max_memory_; }
-  /// Sets the limit of `estimated_peak_memory()` checked before the voxelization.
+  /// Sets the limit of `estimated_peak_memory()` checked before the voxelization and
+  /// the initial skeleton.
   /// \throws DF_L1::Invalid_input if `bytes` is not > 0
   void set_max_memory(double bytes)
   {
@@ -547,6 +564,7 @@ private:
     }
     if(first <= 6)
     {
+      refined_memory_.reset();
       initial_.reset();
       initial_in_input_units_.reset();
     }
@@ -596,12 +614,33 @@ private:
     return parameters_.upsampling_radius ? normalization_.to_internal(*parameters_.upsampling_radius)
                                          : DF_L1::internal::default_upsampling_radius(diagonal_, points_.size());
   }
+  // the constructor's estimate, from the parameters and the number of points
+  DF_L1::internal::Memory_estimate initial_memory_estimate() const
+  {
+    return DF_L1::internal::initial_memory_estimate(
+      double(points_.size()), DF_L1::internal::finest_voxel_count(extent_, parameters_.voxel_resolution));
+  }
+  // the best estimate so far
   DF_L1::internal::Memory_estimate memory_estimate() const
   {
-    DF_L1::internal::Memory_estimate estimate;
-    estimate.points = double(points_.size());
-    estimate.voxels = DF_L1::internal::finest_voxel_count(extent_, parameters_.voxel_resolution);
-    return estimate;
+    return refined_memory_ ? *refined_memory_ : initial_memory_estimate();
+  }
+  // Refines the estimate from the distance field, with or without the graph repairs of
+  // the initial skeleton, and checks it.
+  void refine_memory_estimate(bool repairs, const char* stage)
+  {
+    DF_L1::internal::Voxel_stage_counts counts;
+    counts.points = double(points_.size());
+    counts.added_points = double(added_points_.size());
+    counts.voxels = double(field_->size());
+    counts.interior_voxels =
+      double(std::count(field_->labels.begin(), field_->labels.end(), DF_L1::Voxel_label::INTERIOR));
+    counts.grid_copy = grid_in_input_units_ != nullptr;
+    counts.field_copy = field_in_input_units_ != nullptr;
+    counts.denoised = denoised_;
+    counts.repair = repairs;
+    refined_memory_ = std::make_unique<DF_L1::internal::Memory_estimate>(DF_L1::internal::refined_memory_estimate(counts));
+    DF_L1::internal::check_memory(*refined_memory_, max_memory_, parameters_.voxel_resolution, stage);
   }
 
   double internal_initial_voxel_size() const
@@ -648,6 +687,7 @@ private:
   double thickness_ = 0;                   // rms_distance_to_best_plane() of the points
   std::array<double, 3> extent_ = {{0, 0, 0}}; // of the bounding box of the points
   double max_memory_ = 0;
+  std::unique_ptr<DF_L1::internal::Memory_estimate> refined_memory_; // from the distance field, once known
   DF_L1::Parameters parameters_;
 
   std::vector<bool> sparse_outliers_, outliers_;

@@ -209,3 +209,39 @@ TEST_CASE("skeletonization class: the memory guard refuses a run beyond max_memo
     scaled.emplace_back(1e6 * p.x(), 1e6 * p.y(), 1e6 * p.z());
   CHECK(Skeletonization(scaled).estimated_peak_memory() == Approx(coarse.estimated_peak_memory()));
 }
+
+TEST_CASE("skeletonization class: the memory estimate is refined from the distance field and checked before the "
+          "initial skeleton's thinning and graph repairs", "[class][memory]")
+{
+  // two apart parts: the curves of the thinning are two pieces, so the graph repairs run
+  const std::vector<Point_3> points =
+    DF_L1_test::make_sample(DF_L1_test::shape_by_name("disjoint_pair"), DF_L1_test::Variant::clean, 3000, 1).points;
+  Skeletonization probe(points, CGAL::parameters::voxel_resolution(100));
+  const double initial = probe.initial_estimated_peak_memory();
+  CHECK(probe.estimated_peak_memory() == initial); // the constructor's estimate
+  probe.compute_distance_field();
+  CHECK(probe.estimated_peak_memory() == initial); // refined when the initial skeleton starts
+  probe.extract_initial_skeleton();
+  const double refined = probe.estimated_peak_memory();
+  CHECK(probe.initial_estimated_peak_memory() == initial);
+  // the repairs hold 45 bytes per voxel besides the grid and the field: more than the 30
+  // of the initial model
+  REQUIRE(refined > initial);
+  // a changed parameter of the initial skeleton goes back to the constructor's estimate
+  probe.set_thinning_coefficient(0.9);
+  CHECK(probe.estimated_peak_memory() == initial);
+  probe.extract_initial_skeleton();
+  CHECK(probe.estimated_peak_memory() == Approx(refined).epsilon(0.02));
+
+  // A limit between the two estimates passes the constructor and the voxelization, and
+  // stops the run before the repairs allocate, naming the parameter to lower.
+  Skeletonization limited(points, CGAL::parameters::voxel_resolution(100, CGAL::parameters::max_memory(0.999 * refined)));
+  CHECK_NOTHROW(limited.compute_distance_field());
+  CHECK_THROWS_WITH(limited.extract_initial_skeleton(),
+                    Catch::Contains("initial skeleton (graph repairs)") && Catch::Contains("voxels in the grid") &&
+                      Catch::Contains("lower voxel_resolution") && Catch::Contains("max_memory"));
+  CHECK(limited.estimated_peak_memory() == Approx(refined));
+  // raised, the same object goes on
+  limited.set_max_memory(1.001 * refined);
+  CHECK_NOTHROW(limited.extract_initial_skeleton());
+}

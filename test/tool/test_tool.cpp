@@ -274,6 +274,33 @@ TEST_CASE("tool: the memory guard refuses a run beyond --max-memory at once, nam
   CHECK(json.str().find("\"estimated_peak_memory_mib\"") != std::string::npos);
 }
 
+TEST_CASE("tool: the refined memory estimate stops a run before the initial skeleton when it exceeds --max-memory",
+          "[tool][memory]")
+{
+  const Scratch scratch;
+  const std::string input = scratch.write("sphere.xyz", sphere_points(3000));
+  const std::string output = scratch.path("out.ply");
+  const std::string report = scratch.path("r.json");
+  const Run ran = run_tool("\"" + input + "\" \"" + output + "\" --stage initial --report \"" + report + "\"", scratch);
+  INFO(ran.err);
+  REQUIRE(ran.status == 0);
+  const auto tree = read_report(report);
+  const double refined = tree.get<double>("estimated_peak_memory_mib");
+  const double initial = tree.get<double>("initial_estimated_peak_memory_mib");
+  // a sphere at voxel resolution 100: 1.3 million voxels, of which the grid, the field,
+  // their copies in input units and the initial skeleton's search hold 42 bytes each,
+  // more than the 30 of the initial model
+  REQUIRE(refined > initial);
+  fs::remove(output);
+  const long long limit = static_cast<long long>((initial + refined) / 2 * 1024 * 1024);
+  const Run refused = run_tool("\"" + input + "\" \"" + output + "\" --max-memory " + std::to_string(limit), scratch);
+  CHECK(refused.status == 1);
+  CHECK(refused.err.find("initial skeleton") != std::string::npos);
+  CHECK(refused.err.find("lower voxel_resolution") != std::string::npos);
+  CHECK(refused.err.find("max_memory") != std::string::npos);
+  CHECK_FALSE(fs::exists(output));
+}
+
 TEST_CASE("tool: a valid input gives the skeleton, the preview and a complete report", "[tool]")
 {
   const Scratch scratch;

@@ -107,7 +107,17 @@ namespace DF_L1 {
 template <class ConcurrencyTag = CGAL::Parallel_if_available_tag, class Traits,
           class NamedParameters = parameters::Default_named_parameters>
 Initial_skeleton<Traits> extract_initial_skeleton(const Distance_field<Traits>& field,
-                                                  const NamedParameters& np = parameters::default_values())
+                                                  const NamedParameters& np = parameters::default_values());
+
+namespace internal {
+
+// extract_initial_skeleton(), calling `before_repairs()` once before the graph repairs
+// (joining pieces, adding missing branches) when one of them will run: each allocates
+// 32 bytes per voxel of the grid, and whether they run is known only here.
+// DF_L1_skeletonization checks its memory estimate there.
+template <class ConcurrencyTag, class Traits, class NamedParameters, class BeforeRepairs>
+Initial_skeleton<Traits> extract_initial_skeleton(const Distance_field<Traits>& field, const NamedParameters& np,
+                                                  const BeforeRepairs& before_repairs)
 {
   const double c = internal::thinning_coefficient(np, "initial skeleton");
   const double spur_ratio = internal::spur_length_ratio(np, "initial skeleton");
@@ -209,13 +219,24 @@ Initial_skeleton<Traits> extract_initial_skeleton(const Distance_field<Traits>& 
     internal::prune_spurs(result.graph, spur_ratio, voxel, noise);
   // Pieces within one component of the occupied voxels are joined; the depth of the
   // thin parts is the same transform when it was computed.
-  if(skeleton_statistics(result.graph).components > 1)
+  const bool join = skeleton_statistics(result.graph).components > 1;
+  if(join || has_thin)
+    before_repairs();
+  if(join)
     internal::join_pieces_within_shape(result.graph, field,
                                        thin.depth.empty() ? internal::occupied_depth(field) : thin.depth);
   // The thin limbs that the thinning ate from their flat tips get their branches back.
   if(has_thin)
     internal::add_missing_branches(result.graph, field, thin.depth, thin.voxels, 4.0 + 2 * noise / voxel, 1.5);
   return result;
+}
+
+} // namespace internal
+
+template <class ConcurrencyTag, class Traits, class NamedParameters>
+Initial_skeleton<Traits> extract_initial_skeleton(const Distance_field<Traits>& field, const NamedParameters& np)
+{
+  return internal::extract_initial_skeleton<ConcurrencyTag>(field, np, [] {});
 }
 
 } // namespace DF_L1

@@ -123,8 +123,10 @@ CGAL_DF_L1_ADD_NAMED_PARAMETER(df_l1_surface_noise, surface_noise)
 /// \ingroup PkgDFL1SkeletonNamedParameters
 /// The most memory, in bytes, that `DF_L1_skeletonization` may use: the estimate of its
 /// peak (`DF_L1_skeletonization::estimated_peak_memory()`) beyond it throws
-/// `DF_L1::Invalid_input` naming the parameter to lower (default: the memory available
-/// when the object is constructed, `MemAvailable` on Linux; no limit elsewhere).
+/// `DF_L1::Invalid_input` naming the parameter to lower, in the constructor, before the
+/// voxelization, and with the estimate refined from the voxels before the initial
+/// skeleton's thinning and graph repairs (default: the memory available when the object
+/// is constructed, `MemAvailable` on Linux; no limit elsewhere).
 CGAL_DF_L1_ADD_NAMED_PARAMETER(df_l1_max_memory, max_memory)
 /// \ingroup PkgDFL1SkeletonNamedParameters
 /// Whether the voxelization opens the interior voxels that see the exterior along 10 or
