@@ -197,7 +197,8 @@ def _remove_leftovers(tasks: Sequence[Dict[str, Any]]) -> None:
 
 
 def _write_summary(path: str, records: Sequence[Dict[str, Any]]) -> None:
-    temporary = f"{path}.tmp.{os.getpid()}"
+    directory, name = os.path.split(path)
+    temporary = os.path.join(directory, f".{name}.tmp.{os.getpid()}")
     with open(temporary, "w", encoding="utf-8") as f:
         for r in records:
             f.write(json.dumps(r) + "\n")
