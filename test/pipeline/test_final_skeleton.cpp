@@ -5,6 +5,7 @@
 #include "support/threads.h"
 
 #include <CGAL/DF_L1_skeleton.h>
+#include <CGAL/DF_L1_skeleton/internal/attach_fragments.h>
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -359,4 +360,44 @@ TEST_CASE("final skeleton: contract() runs one support-radius stage at a time", 
   stepped.set_repulsion_coefficient(0.3);
   CHECK(stepped.contract());
   CHECK(stepped.contracted_samples().stages.size() == 1);
+}
+
+TEST_CASE("final skeleton: a small fragment near a larger piece is attached, other pieces stay apart", "[final]")
+{
+  // Pieces of points along lines, one vertex per unit of length standing for its points.
+  std::vector<std::array<double, 3>> xyz;
+  Graph g;
+  auto piece = [&](double x0, double x1, double y) {
+    Graph::vertex_descriptor previous = Graph::null_vertex(), first = Graph::null_vertex();
+    for(double x = x0; x <= x1 + 1e-9; x += 1)
+    {
+      const Graph::vertex_descriptor v = boost::add_vertex(g);
+      g[v].point = Kernel::Point_3(x, y, 0);
+      for(double t = x - 0.45; t <= x + 0.45 + 1e-9 && t <= x1 + 1e-9; t += 0.1)
+        if(t >= x0 - 1e-9)
+        {
+          g[v].points.push_back(xyz.size());
+          xyz.push_back({{t, y, 0}});
+        }
+      if(previous != Graph::null_vertex())
+        boost::add_edge(previous, v, g);
+      else
+        first = v;
+      previous = v;
+    }
+    return first;
+  };
+  piece(0, 10, 0);                                  // the object, extent 10
+  const auto fragment = piece(10.6, 12.1, 0);       // extent 1.5, 0.6 away: attached
+  piece(5, 6, 8);                                   // extent 1, 8 away: a separate small object
+  piece(0, 8, 3);                                   // extent 8, 3 away: a separate object of comparable size
+  REQUIRE(DF::skeleton_statistics(g).components == 4);
+  CHECK(DF::internal::attach_fragments(g, xyz) == 1);
+  const DF::Skeleton_statistics st = DF::skeleton_statistics(g);
+  CHECK(st.components == 3);
+  CHECK(st.cycles == 0);
+  // the edge joins the fragment's first vertex to the object's last one
+  CHECK(boost::edge(fragment, Graph::vertex_descriptor(10), g).second);
+  // a second call finds nothing more to attach
+  CHECK(DF::internal::attach_fragments(g, xyz) == 0);
 }

@@ -5,6 +5,8 @@
 
 #include <catch2/catch.hpp>
 
+#include <unistd.h>
+
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -82,7 +84,7 @@ TEST_CASE("benchmark comparison: warns about stages more than 25 % slower only",
 
 TEST_CASE("benchmark report: targets checked against the figures, plots written", "[benchmark]")
 {
-  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "df_l1_test_benchmark_report";
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / ("df_l1_test_benchmark_report_" + std::to_string(::getpid()));
   std::filesystem::remove_all(dir);
   std::vector<Record> records = {timed("headline/stick_figure-clean", "df_l1", 0.4),
                                  timed("headline/stick_figure-clean", "poisson_mcf", 6.0)};

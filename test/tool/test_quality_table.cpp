@@ -4,6 +4,8 @@
 
 #include <catch2/catch.hpp>
 
+#include <unistd.h>
+
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -15,7 +17,7 @@ namespace {
 
 std::string temp_path(const std::string& name)
 {
-  return (std::filesystem::temp_directory_path() / ("df_l1_quality_test_" + name)).string();
+  return (std::filesystem::temp_directory_path() / ("df_l1_quality_test_" + std::to_string(::getpid()) + "_" + name)).string();
 }
 
 Row corpus_row(const std::string& name, const std::string& family, const std::string& degradation, bool ok, double coverage)

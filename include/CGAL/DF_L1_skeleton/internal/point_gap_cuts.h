@@ -12,6 +12,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <limits>
 #include <utility>
 #include <vector>
 
@@ -172,6 +173,61 @@ std::size_t cut_point_gaps(Skeleton_graph<Traits>& g, const std::vector<std::arr
     // leave near v, when it passes for a gap (0 otherwise). With `across_neck`, the line
     // joins two thick parts through a neck, and the bounding points may lie anywhere in
     // the disk: the surfaces that close the gap are those of the parts themselves.
+    // Under noise the gap between two surfaces holds points too, but far fewer than the
+    // surfaces that bound it, which cross the line there: the abscissas of the points near
+    // the line show a valley between two peaks. Along a part its walls run beside the line
+    // and project evenly; a hole of the scan on one side leaves half of them. The valley is
+    // a voxel wide, at most a quarter as dense as the lower of the densest voxel-wide
+    // windows within 2 voxels on either side, which hold 12 points or more and come nearer
+    // the line than 0.7 of the local radius (unless `across_neck`, as for an empty gap).
+    // Returns the valley's depth in voxels times a voxel (0 without a valley): a clean
+    // empty gap of the same place ranks higher.
+    std::vector<std::size_t> histogram;
+    std::vector<double> histogram_offset2;
+    auto valley_width = [&](double r, bool across_neck) {
+      const double bin = 0.5 * voxel;
+      const int bins = int(std::ceil(2 * reach_along / bin));
+      histogram.assign(std::size_t(bins), 0);
+      histogram_offset2.assign(std::size_t(bins), std::numeric_limits<double>::infinity());
+      for(const Near_point& a : along)
+      {
+        const int b = (std::min)(bins - 1, (std::max)(0, int((a.abscissa + reach_along) / bin)));
+        ++histogram[std::size_t(b)];
+        histogram_offset2[std::size_t(b)] = (std::min)(histogram_offset2[std::size_t(b)], a.offset2);
+      }
+      const int wall_bins = int(std::ceil(2 * voxel / bin));
+      auto pair_count = [&](int k) { return histogram[std::size_t(k)] + histogram[std::size_t(k + 1)]; };
+      auto pair_offset2 = [&](int k) {
+        return (std::min)(histogram_offset2[std::size_t(k)], histogram_offset2[std::size_t(k + 1)]);
+      };
+      double best = 0;
+      for(int c = 0; c + 1 < bins; ++c)
+      {
+        if(std::abs((c + 1) * bin - reach_along) > centre_window)
+          continue;
+        std::size_t left = 0, right = 0;
+        double left_offset2 = 0, right_offset2 = 0;
+        for(int k = c - 2; k >= 0 && k >= c - wall_bins; --k)
+          if(pair_count(k) > left)
+          {
+            left = pair_count(k);
+            left_offset2 = pair_offset2(k);
+          }
+        for(int k = c + 2; k + 1 < bins && k <= c + 1 + wall_bins; ++k)
+          if(pair_count(k) > right)
+          {
+            right = pair_count(k);
+            right_offset2 = pair_offset2(k);
+          }
+        const std::size_t walls = (std::min)(left, right), inside = pair_count(c);
+        if(walls < 2 * dense_wall_points || 4 * inside > walls)
+          continue;
+        if(!across_neck && std::sqrt((std::max)(left_offset2, right_offset2)) >= 0.7 * (std::max)(r, voxel))
+          continue;
+        best = (std::max)(best, voxel * (1 - double(inside) / double(walls)));
+      }
+      return best;
+    };
     auto gap_width = [&](std::size_t v, A t, bool across_neck) {
       const double tl = distance(t, A{{0, 0, 0}});
       if(!(tl > 0))
@@ -203,7 +259,7 @@ std::size_t cut_point_gaps(Skeleton_graph<Traits>& g, const std::vector<std::arr
           gap = k;
         }
       if(widest < min_gap)
-        return 0.0;
+        return valley_width(r, across_neck);
       // A curve that leaves a part crosses its surface: the points bounding the gap lie
       // near the line. Along a thin part, a sampling gap is bounded by the wall, as far
       // from the line as the local radius.
