@@ -21,9 +21,9 @@
 #include <CGAL/DF_L1_skeleton/errors.h>
 #include <CGAL/DF_L1_skeleton/extract_initial_skeleton.h>
 #include <CGAL/DF_L1_skeleton/flag_sparse_outliers.h>
+#include <CGAL/DF_L1_skeleton/internal/attach_fragments.h>
 #include <CGAL/DF_L1_skeleton/internal/memory_estimate.h>
 #include <CGAL/DF_L1_skeleton/internal/normalization.h>
-#include <CGAL/DF_L1_skeleton/internal/attach_fragments.h>
 #include <CGAL/DF_L1_skeleton/internal/point_gap_cuts.h>
 #include <CGAL/DF_L1_skeleton/internal/point_range.h>
 #include <CGAL/DF_L1_skeleton/internal/sampling_spacing.h>
@@ -312,9 +312,9 @@ public:
   }
 
   /// Builds the final skeleton from the contracted samples (`build_skeleton_graph()`),
-  /// assigns every non-outlier input point to its nearest vertex, and attaches each piece
-  /// that stands for at most a tenth of the points of another piece, and comes nearer to
-  /// it than its own extent, by one edge (a fragment whose connection the scan missed).
+  /// assigns every non-outlier input point to its nearest vertex, and attaches by one edge
+  /// each piece whose points span at most a third of another piece's extent and come
+  /// nearer to it than their own extent (a fragment whose connection the scan missed).
   void convert_to_skeleton()
   {
     if(skeleton_)
@@ -322,8 +322,8 @@ public:
     contract_until_convergence();
     skeleton_ = std::make_unique<Skeleton>(DF_L1::build_skeleton_graph(*contracted_, *field_, *initial_));
     DF_L1::assign_points_to_skeleton<ConcurrencyTag>(points_, outliers_, *skeleton_);
-    // A piece that stands for few points near a much larger one is a fragment of it whose
-    // connection the scan missed (`internal::attach_fragments()`).
+    // A piece much smaller than another and near it is a fragment of it whose connection
+    // the scan missed (`internal::attach_fragments()`).
     if(DF_L1::skeleton_statistics(*skeleton_).components > 1)
       DF_L1::internal::attach_fragments(*skeleton_, DF_L1::internal::to_xyz(points_, CGAL::Identity_property_map<Point>()));
   }

@@ -169,10 +169,6 @@ std::size_t cut_point_gaps(Skeleton_graph<Traits>& g, const std::vector<std::arr
       }
     };
     std::vector<Near_point> along;
-    // The width of the empty interval that the points near the line through v along `t`
-    // leave near v, when it passes for a gap (0 otherwise). With `across_neck`, the line
-    // joins two thick parts through a neck, and the bounding points may lie anywhere in
-    // the disk: the surfaces that close the gap are those of the parts themselves.
     // Under noise the gap between two surfaces holds points too, but far fewer than the
     // surfaces that bound it, which cross the line there: the abscissas of the points near
     // the line show a valley between two peaks. Along a part its walls run beside the line
@@ -228,6 +224,10 @@ std::size_t cut_point_gaps(Skeleton_graph<Traits>& g, const std::vector<std::arr
       }
       return best;
     };
+    // The width of the empty interval that the points near the line through v along `t`
+    // leave near v, when it passes for a gap (0 otherwise). With `across_neck`, the line
+    // joins two thick parts through a neck, and the bounding points may lie anywhere in
+    // the disk: the surfaces that close the gap are those of the parts themselves.
     auto gap_width = [&](std::size_t v, A t, bool across_neck) {
       const double tl = distance(t, A{{0, 0, 0}});
       if(!(tl > 0))
