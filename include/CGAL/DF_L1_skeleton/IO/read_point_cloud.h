@@ -84,7 +84,8 @@ inline std::string lower_case_extension(const std::string& filename)
 }
 
 /// The content of a file, opened read-only: mapped when it is a regular file
-/// (see input_buffer.h), else read as a stream (a FIFO, say).
+/// (see input_buffer.h), else read from the descriptor (a FIFO, say), or as a
+/// stream where there is no POSIX `open`.
 inline Input_buffer read_file(const std::string& filename)
 {
   namespace fs = std::filesystem;
@@ -94,10 +95,10 @@ inline Input_buffer read_file(const std::string& filename)
     fail(filename, "", "cannot open file: no such file");
   if(st.type() == fs::file_type::directory)
     fail(filename, "", "cannot open file: it is a directory");
-  Input_buffer mapped;
+  Input_buffer content;
   int open_errno = 0;
-  if(map_regular_file(filename, mapped, open_errno))
-    return mapped;
+  if(read_with_descriptor(filename, content, open_errno))
+    return content;
   errno = 0;
   std::ifstream in(filename, std::ios::in | std::ios::binary);
   if(!in.is_open()) {

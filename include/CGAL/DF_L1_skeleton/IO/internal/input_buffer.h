@@ -205,31 +205,12 @@ private:
 #endif
 };
 
-/// Reads everything left in `in`. A seekable stream (a file) is read in one
-/// allocation of its remaining size, left uninitialised: no zeroing pass and no
-/// reallocation copies. Other streams grow the buffer geometrically.
-inline Input_buffer read_stream(std::istream& in, const std::string& name)
+/// Reads until `read_some(buffer, n)` returns 0 (it returns how many bytes it
+/// put in `buffer`, at most `n`) into a buffer of `capacity` bytes, left
+/// uninitialised, that grows geometrically when full.
+template <class ReadSome>
+Input_buffer read_to_end(std::size_t capacity, const std::string& name, ReadSome read_some)
 {
-  if(!in)
-    fail(name, "", "cannot read (the stream is not in a good state)");
-  Input_buffer result;
-  std::streamoff remaining = -1;
-  {
-    const std::istream::pos_type here = in.tellg();
-    if(here != std::istream::pos_type(-1) && in.seekg(0, std::ios::end)) {
-      const std::istream::pos_type end = in.tellg();
-      if(end != std::istream::pos_type(-1) && end >= here)
-        remaining = static_cast<std::streamoff>(end - here);
-      in.seekg(here);
-    }
-    in.clear(in.rdstate() & ~std::ios::failbit); // a refused seek is no error
-  }
-  if(!in)
-    fail(name, "", "read error");
-
-  // The size is a hint only (a text-mode stream may deliver fewer bytes): the
-  // loop below reads to the end whatever it says.
-  std::size_t capacity = remaining > 0 ? static_cast<std::size_t>(remaining) + 1 : (std::size_t(1) << 16);
   auto allocate = [&name](std::size_t n) {
     try {
       std::unique_ptr<char[]> bytes(new char[n]);
@@ -249,22 +230,76 @@ inline Input_buffer read_stream(std::istream& in, const std::string& name)
       bytes = std::move(bigger);
       capacity = grown;
     }
-    in.read(bytes.get() + size, static_cast<std::streamsize>(capacity - size));
-    size += static_cast<std::size_t>(in.gcount());
-    if(!in)
+    const std::size_t got = read_some(bytes.get() + size, capacity - size);
+    if(got == 0)
       break;
+    size += got;
   }
-  if(in.bad())
-    fail(name, "", "read error");
+  Input_buffer result;
   result.own(std::move(bytes), size);
   return result;
 }
 
-/// Opens `filename` read-only and maps it when it is a regular file; returns
-/// false (and leaves `out` alone) when it cannot be mapped, e.g. a FIFO or a
-/// system without mmap, or `open` fails. `open_errno` is then the error of
-/// `open`, or 0.
-inline bool map_regular_file(const std::string& filename, Input_buffer& out, int& open_errno)
+/// Reads everything left in `in`. A seekable stream (a file) is read in one
+/// allocation of its remaining size, left uninitialised: no zeroing pass and no
+/// reallocation copies. Other streams grow the buffer geometrically.
+inline Input_buffer read_stream(std::istream& in, const std::string& name)
+{
+  if(!in)
+    fail(name, "", "cannot read (the stream is not in a good state)");
+  std::streamoff remaining = -1;
+  {
+    const std::istream::pos_type here = in.tellg();
+    if(here != std::istream::pos_type(-1) && in.seekg(0, std::ios::end)) {
+      const std::istream::pos_type end = in.tellg();
+      if(end != std::istream::pos_type(-1) && end >= here)
+        remaining = static_cast<std::streamoff>(end - here);
+      in.seekg(here);
+    }
+    in.clear(in.rdstate() & ~std::ios::failbit); // a refused seek is no error
+  }
+  if(!in)
+    fail(name, "", "read error");
+
+  // The size is a hint only (a text-mode stream may deliver fewer bytes): the
+  // loop reads to the end whatever it says.
+  const std::size_t capacity =
+      remaining > 0 ? static_cast<std::size_t>(remaining) + 1 : (std::size_t(1) << 16);
+  Input_buffer result = read_to_end(capacity, name, [&in](char* to, std::size_t n) -> std::size_t {
+    if(!in)
+      return 0;
+    in.read(to, static_cast<std::streamsize>(n));
+    return static_cast<std::size_t>(in.gcount());
+  });
+  if(in.bad())
+    fail(name, "", "read error");
+  return result;
+}
+
+#ifdef CGAL_DF_L1_HAS_MMAP
+/// Reads the open descriptor `fd` (a FIFO, a device, a file of /proc) to its
+/// end, starting with a buffer of `capacity` bytes.
+inline Input_buffer read_descriptor(int fd, std::size_t capacity, const std::string& name)
+{
+  return read_to_end(std::max<std::size_t>(capacity, 1), name, [fd, &name](char* to, std::size_t n) -> std::size_t {
+    for(;;) {
+      const ::ssize_t got = ::read(fd, to, n);
+      if(got >= 0)
+        return static_cast<std::size_t>(got);
+      if(errno != EINTR)
+        fail(name, "", std::string("read error: ") + std::strerror(errno));
+    }
+  });
+}
+#endif
+
+/// Opens `filename` read-only and stores its content in `out`: mapped when it is
+/// a regular file, else read from the same descriptor (a FIFO must be opened
+/// once: closing it and opening it again would lose what its writer had sent
+/// and could kill the writer with SIGPIPE). Returns false (and leaves `out`
+/// alone) when there is no POSIX `open` or it fails; `open_errno` is then the
+/// error of `open`, or 0.
+inline bool read_with_descriptor(const std::string& filename, Input_buffer& out, int& open_errno)
 {
   open_errno = 0;
 #ifdef CGAL_DF_L1_HAS_MMAP
@@ -278,14 +313,20 @@ inline bool map_regular_file(const std::string& filename, Input_buffer& out, int
     return false;
   }
   struct stat st;
-  bool mapped = false;
-  // Size 0 is left to the stream path: files of /proc say 0 yet have content.
-  if(::fstat(fd, &st) == 0 && S_ISREG(st.st_mode) && st.st_size > 0 &&
-     static_cast<std::uint64_t>(st.st_size) <= static_cast<std::uint64_t>(SIZE_MAX))
-    mapped = out.map_file(fd, st); // which then owns the descriptor
-  if(!mapped)
+  // Size 0 is read, not mapped: files of /proc say 0 yet have content.
+  const bool sized = ::fstat(fd, &st) == 0 && S_ISREG(st.st_mode) && st.st_size > 0 &&
+                     static_cast<std::uint64_t>(st.st_size) < static_cast<std::uint64_t>(SIZE_MAX);
+  if(sized && out.map_file(fd, st)) // which then owns the descriptor
+    return true;
+  try {
+    out = read_descriptor(fd, sized ? static_cast<std::size_t>(st.st_size) + 1 : std::size_t(1) << 16,
+                          filename);
+  } catch(...) {
     ::close(fd);
-  return mapped;
+    throw;
+  }
+  ::close(fd);
+  return true;
 #else
   (void)filename;
   (void)out;
