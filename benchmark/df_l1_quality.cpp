@@ -112,6 +112,10 @@ Row run_corpus_case(const Options& o, const DF_L1_test::Shape& shape, const std:
     const DF_L1_test::Skeleton_quality q = DF_L1_test::measure_quality(shape, g, voxel, qo);
     row.got = counts(q.topology);
     row.initial = counts(DF_L1_test::measure_quality(shape, s.initial_skeleton().graph, voxel, qo).topology);
+    std::vector<std::pair<double, bool>> tips;
+    for(const DF_L1_test::Tip_recall& t : DF_L1_test::tip_recall(shape, g, voxel))
+      tips.emplace_back(t.free_voxels, t.found);
+    row.tips = DF_L1_quality::tip_counts(tips);
     row.ok = DF_L1_test::corpus_topology_matches(shape, q.topology, d.noisy);
     row.ratio = q.mean_axis_ratio;
     row.outside = q.outside_fraction;

@@ -16,6 +16,7 @@
 #include <cstddef>
 #include <cstdio>
 #include <fstream>
+#include <limits>
 #include <map>
 #include <sstream>
 #include <stdexcept>
@@ -41,7 +42,35 @@ struct Row
   std::size_t points = 0;  ///< input points
   std::string error;       ///< what was thrown, if anything (the case then fails)
   std::string initial;     ///< the counts of the initial skeleton (as `got`), for diagnosis
+  /// corpus: the designed end points found / designed, by how far their limb stands apart
+  /// (`tip_recall()`), one "found/designed" per class of `tip_classes()`, space-separated
+  std::string tips;
 };
+
+/// The classes of designed end points by the free length of their limb, in voxels.
+inline const std::vector<std::pair<double, std::string>>& tip_classes()
+{
+  static const std::vector<std::pair<double, std::string>> classes{
+    {2, "under 2 voxels"}, {4, "2 to 4"}, {6, "4 to 6"}, {std::numeric_limits<double>::infinity(), "6 or more"}};
+  return classes;
+}
+
+/// `Row::tips` of the tip recalls `t` (pairs of free length in voxels, found).
+inline std::string tip_counts(const std::vector<std::pair<double, bool>>& t)
+{
+  std::vector<std::size_t> found(tip_classes().size(), 0), designed(tip_classes().size(), 0);
+  for(const auto& tip : t)
+    for(std::size_t c = 0; c < tip_classes().size(); ++c)
+      if(tip.first < tip_classes()[c].first) {
+        ++designed[c];
+        found[c] += tip.second;
+        break;
+      }
+  std::string s;
+  for(std::size_t c = 0; c < designed.size(); ++c)
+    s += (c ? " " : "") + std::to_string(found[c]) + "/" + std::to_string(designed[c]);
+  return s;
+}
 
 inline std::string clean_field(std::string s)
 {
@@ -54,13 +83,14 @@ inline std::string clean_field(std::string s)
 inline void write_rows(const std::string& path, const std::vector<Row>& rows)
 {
   CGAL::DF_L1::write_file_atomically(path, [&](std::ostream& out) {
-    out << "kind\tname\tfamily\tdegradation\texpected\tgot\tok\tratio\toutside\tcoverage\tseconds\tpoints\terror\tinitial\n";
+    out << "kind\tname\tfamily\tdegradation\texpected\tgot\tok\tratio\toutside\tcoverage\tseconds\tpoints\terror\tinitial\ttips\n";
     char num[160];
     for(const Row& r : rows) {
       std::snprintf(num, sizeof num, "%.4f\t%.5f\t%.4f\t%.3f\t%zu", r.ratio, r.outside, r.coverage, r.seconds, r.points);
       out << clean_field(r.kind) << '\t' << clean_field(r.name) << '\t' << clean_field(r.family) << '\t'
           << clean_field(r.degradation) << '\t' << clean_field(r.expected) << '\t' << clean_field(r.got) << '\t'
-          << (r.ok ? 1 : 0) << '\t' << num << '\t' << clean_field(r.error) << '\t' << clean_field(r.initial) << '\n';
+          << (r.ok ? 1 : 0) << '\t' << num << '\t' << clean_field(r.error) << '\t' << clean_field(r.initial) << '\t'
+          << clean_field(r.tips) << '\n';
     }
   });
 }
@@ -97,6 +127,7 @@ inline std::vector<Row> read_rows(const std::string& path)
     r.points = std::size_t(std::stoull(f[11]));
     r.error = f.size() > 12 && f[12] != "-" ? f[12] : "";
     r.initial = f.size() > 13 && f[13] != "-" ? f[13] : "";
+    r.tips = f.size() > 14 && f[14] != "-" ? f[14] : "";
     rows.push_back(r);
   }
   return rows;
@@ -395,6 +426,54 @@ inline std::string markdown_report(const std::vector<Row>& rows, const std::vect
   };
   metric_table("family", ctx.families, true);
   metric_table("degradation", ctx.degradations, false);
+
+  // Designed end points found, by how far their limb stands apart from the other parts.
+  // found / designed of the class `c` of tip_classes(), under `degradation` ("": all)
+  auto tip_tally = [&](const std::vector<Row>& from, const std::string& degradation, std::size_t c) {
+    std::pair<std::size_t, std::size_t> t{0, 0};
+    for(const Row& r : from) {
+      if(!corpus(r) || (!degradation.empty() && r.degradation != degradation) || r.tips.empty())
+        continue;
+      std::istringstream in(r.tips);
+      std::string field;
+      for(std::size_t k = 0; in >> field; ++k)
+        if(k == c) {
+          const std::size_t slash = field.find('/');
+          t.first += std::stoul(field.substr(0, slash));
+          t.second += std::stoul(field.substr(slash + 1));
+        }
+    }
+    return t;
+  };
+  auto tip_percent = [](const std::pair<std::size_t, std::size_t>& t) {
+    char b[32];
+    std::snprintf(b, sizeof b, "%.0f", 100.0 * double(t.first) / double(t.second));
+    return std::string(b);
+  };
+  md << "\n## Designed end points found, by how far their limb stands apart\n\n";
+  md << "Per designed end point (shapes without plates): found when the skeleton has an end point within "
+        "max(3 voxels, 3 radii) of it; classed by the length of its limb's axis, from the tip back, along which its "
+        "surface keeps at least a voxel from every other part (`tip_recall()` in tools/evaluation/skeleton_quality.h). "
+        "A tip of the first class is fused with a neighbour to near its end. % found of the designed tips, all families.\n\n";
+  md << "| degradation |";
+  for(const auto& c : tip_classes())
+    md << ' ' << c.second << " |";
+  md << "\n|---|";
+  for(std::size_t c = 0; c < tip_classes().size(); ++c)
+    md << "---|";
+  md << '\n';
+  for(std::size_t di = 0; di <= ctx.degradations.size(); ++di) {
+    const std::string d = di < ctx.degradations.size() ? ctx.degradations[di] : "";
+    md << "| " << (d.empty() ? "**all**" : d) << " |";
+    for(std::size_t c = 0; c < tip_classes().size(); ++c) {
+      const auto now = tip_tally(rows, d, c), before = tip_tally(previous, d, c);
+      if(!now.second)
+        md << " - |";
+      else
+        md << ' ' << beside(tip_percent(now), before.second ? tip_percent(before) : "") << " of " << now.second << " |";
+    }
+    md << '\n';
+  }
 
   md << "\n## Real scans (`../shared/data`)\n\n";
   md << "Near: the share of the points not flagged as outliers that lie within 0.08 d_bb of the skeleton.\n\n";

@@ -25,53 +25,6 @@ double longest_side(const CGAL::Bbox_3& b)
   return std::max({b.xmax() - b.xmin(), b.ymax() - b.ymin(), b.zmax() - b.zmin()});
 }
 
-// The share of the shape's end points that an end point of `g` stands for: pairs
-// (tip, end) taken nearest first, each used once, no farther apart than `reach`.
-template <class Graph>
-double tip_recall(const Shape& shape, const Graph& g, double reach)
-{
-  std::vector<Point_3> tips;
-  for(const Skeleton_node& n : shape.skeleton_nodes())
-    if(n.degree == 1)
-      tips.push_back(n.point);
-  std::vector<std::size_t> ends;
-  for(std::size_t v = 0; v < boost::num_vertices(g); ++v)
-    if(boost::degree(v, g) == 1)
-      ends.push_back(v);
-  std::vector<std::tuple<double, std::size_t, std::size_t>> pairs;
-  for(std::size_t t = 0; t < tips.size(); ++t)
-    for(std::size_t e = 0; e < ends.size(); ++e) {
-      const double d = std::sqrt(CGAL::to_double(CGAL::squared_distance(tips[t], g[ends[e]].point)));
-      if(d <= reach)
-        pairs.emplace_back(d, t, e);
-    }
-  std::sort(pairs.begin(), pairs.end());
-  std::vector<char> tip_used(tips.size(), 0), end_used(ends.size(), 0);
-  std::size_t matched = 0;
-  for(const auto& p : pairs)
-    if(!tip_used[std::get<1>(p)] && !end_used[std::get<2>(p)]) {
-      tip_used[std::get<1>(p)] = end_used[std::get<2>(p)] = 1;
-      ++matched;
-    }
-  return tips.empty() ? 1.0 : double(matched) / double(tips.size());
-}
-
-// The tip recall (within 5 voxels) of trees_`index` under `degradation`, skeletonized
-// with the defaults, printed; `denoised`, when given, receives whether the cloud was
-// smoothed.
-double tree_tip_recall(int index, const std::string& degradation, bool* denoised = nullptr)
-{
-  const Shape shape = corpus_shape("trees", index);
-  const Sample sample = corpus_sample(shape, index, corpus_degradation(degradation));
-  CGAL::DF_L1_skeletonization<K> s(sample.points);
-  if(denoised)
-    *denoised = s.denoised();
-  const double voxel = CGAL::to_double(s.distance_field().voxel_size);
-  const double recall = tip_recall(shape, s.skeleton(), 5 * voxel);
-  std::cout << shape.name() << ' ' << degradation << ": " << recall << " of the tips kept\n";
-  return recall;
-}
-
 } // namespace
 
 TEST_CASE("corpus: every shape is built, sized and designed as documented", "[corpus]")

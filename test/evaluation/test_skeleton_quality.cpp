@@ -508,3 +508,37 @@ TEST_CASE("quality: a dense 5000-edge axis is measured through the grid", "[qual
   CHECK(q.axis_coverage > 0.999);
   CHECK(q.mean_axis_ratio < 0.01);
 }
+
+TEST_CASE("quality: tip_recall tells a missed tip, and how far its limb stands apart", "[quality]")
+{
+  // A stem and two arms 20 degrees apart, radius 0.05, length 1: the arms' surfaces are
+  // a voxel apart from s = (2 r + voxel) / (2 sin 10 deg) on, so each arm stands apart
+  // along 1 - s of its axis; the stem along its whole length but near the junction.
+  const double r = 0.05, half = 10 * CGAL_PI / 180;
+  Shape shape("fork", {3, 1, 0, 1});
+  const Point_3 o(0, 0, 0);
+  shape.add_round_cone(o, Point_3(0, -1, 0), r, r);
+  shape.add_round_cone(o, Point_3(std::sin(half), std::cos(half), 0), r, r);
+  shape.add_round_cone(o, Point_3(-std::sin(half), std::cos(half), 0), r, r);
+  const double voxel = voxel_of(shape);
+  std::vector<Skeleton_polyline> axis = shape.skeleton_polylines(voxel);
+  REQUIRE(axis.size() == 3);
+  axis.pop_back(); // the skeleton misses the last arm
+  const Graph g = graph_from_polylines(axis, 1e-9);
+  const std::vector<Tip_recall> tips = tip_recall(shape, g, voxel);
+  REQUIRE(tips.size() == 3);
+  const double arm_free = (1 - (2 * r + voxel) / (2 * std::sin(half))) / voxel;
+  CHECK(tips[0].found);
+  CHECK(tips[0].free_voxels > (1 - 4 * r) / voxel); // the depth of the union is more than r at the junction
+  CHECK(tips[0].free_voxels < 1 / voxel);
+  CHECK(tips[1].found);
+  CHECK_FALSE(tips[2].found);
+  for(int i = 1; i < 3; ++i) {
+    CHECK(tips[std::size_t(i)].free_voxels > arm_free - 1);
+    CHECK(tips[std::size_t(i)].free_voxels < arm_free + 1);
+  }
+  // shapes with plates have no designed end points to recall
+  Shape plate("plate", {0, 0, 0, 1});
+  plate.add_slab(o, Vector_3(1, 0, 0), Vector_3(0, 1, 0), 0.5, 0.3, 0.02, Point_3(-0.3, 0, 0), Point_3(0.3, 0, 0));
+  CHECK(tip_recall(plate, g, voxel_of(plate)).empty());
+}

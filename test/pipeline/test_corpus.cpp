@@ -30,7 +30,7 @@ double longest_side(const CGAL::Bbox_3& b)
 // The share of the shape's end points that an end point of `g` stands for: pairs
 // (tip, end) taken nearest first, each used once, no farther apart than `reach`.
 template <class Graph>
-double tip_recall(const Shape& shape, const Graph& g, double reach)
+double matched_tip_share(const Shape& shape, const Graph& g, double reach)
 {
   std::vector<Point_3> tips;
   for(const Skeleton_node& n : shape.skeleton_nodes())
@@ -69,7 +69,7 @@ double tree_tip_recall(int index, const std::string& degradation, bool* denoised
   if(denoised)
     *denoised = s.denoised();
   const double voxel = CGAL::to_double(s.distance_field().voxel_size);
-  const double recall = tip_recall(shape, s.skeleton(), 5 * voxel);
+  const double recall = matched_tip_share(shape, s.skeleton(), 5 * voxel);
   std::cout << shape.name() << ' ' << degradation << ": " << recall << " of the tips kept\n";
   return recall;
 }

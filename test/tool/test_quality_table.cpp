@@ -44,6 +44,8 @@ TEST_CASE("quality rows: a written file reads back, tabs and newlines in message
 {
   std::vector<Row> rows{corpus_row("trees_1", "trees", "clean", true, 0.97), corpus_row("trees_1", "trees", "holes", false, 0.5)};
   rows[1].error = "bad\tthing\nhappened";
+  rows[0].tips = DF_L1_quality::tip_counts({{0.5, false}, {1.5, true}, {3, true}, {7, true}, {30, false}});
+  CHECK(rows[0].tips == "1/2 1/1 0/0 1/2");
   const std::string path = temp_path("rows.tsv");
   DF_L1_quality::write_rows(path, rows);
   const std::vector<Row> back = DF_L1_quality::read_rows(path);
@@ -55,6 +57,8 @@ TEST_CASE("quality rows: a written file reads back, tabs and newlines in message
   CHECK(back[1].coverage == Approx(0.5));
   CHECK(back[1].error == "bad thing happened");
   CHECK(back[0].error.empty());
+  CHECK(back[0].tips == "1/2 1/1 0/0 1/2");
+  CHECK(back[1].tips.empty());
   CHECK(DF_L1_quality::read_rows(temp_path("absent.tsv")).empty());
   std::filesystem::remove(path);
 }
@@ -90,7 +94,10 @@ TEST_CASE("quality report: shares per family and degradation, the previous run b
 {
   std::vector<Row> previous{corpus_row("trees_1", "trees", "clean", false, 0.6), corpus_row("trees_1", "trees", "holes", true, 0.9),
                             corpus_row("loops_1", "loops", "clean", true, 0.95), corpus_row("loops_1", "loops", "holes", true, 0.95)};
+  previous[0].tips = "1/4 0/0 0/0 2/2";
   std::vector<Row> now = previous;
+  now[0].tips = "3/4 0/0 0/0 2/2";
+  now[1].tips = "0/0 1/2 0/0 0/0";
   now[0].ok = true; // gained
   now[0].got = "3/1/0/1";
   now[1].ok = false; // lost
@@ -116,6 +123,9 @@ TEST_CASE("quality report: shares per family and degradation, the previous run b
   CHECK(md.find("Gained 1, lost 1.") != std::string::npos);
   CHECK(md.find("Lost: trees_1 holes (2/0/0/1, expected 3/1/0/1)") != std::string::npos);
   CHECK(md.find("| horse.off |") != std::string::npos);
+  // tips found by class: clean 3 of 4 now (1 before), holes 1 of 2 (none designed before)
+  CHECK(md.find("| clean | 75 (25) of 4 | - | - | 100 of 2 |") != std::string::npos);
+  CHECK(md.find("| holes | - | 50 of 2 | - | - |") != std::string::npos);
   CHECK(md.find("**not met**") != std::string::npos); // 75 % < 95 %
   CHECK(DF_L1_quality::beside("50", "50") == "50");
   CHECK(DF_L1_quality::beside("50", "") == "50");

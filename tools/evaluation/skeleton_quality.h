@@ -331,6 +331,75 @@ inline std::vector<Junction_zone> junction_zones(const Shape& shape, double sepa
   return zones;
 }
 
+/// A designed end point of a shape and whether a skeleton shows it.
+struct Tip_recall
+{
+  /// How far the limb stands apart: the length (voxels) of its axis, from the tip back,
+  /// along which its surface stays at least a voxel away from every other part (the
+  /// first axis sample closer than that ends it). A twig fused with a sibling to near its
+  /// end scores about 0: in the voxel grid it is one lobe with the sibling.
+  double free_voxels = 0;
+  bool found = false; ///< an end point of the skeleton within max(3 voxels, 3 radii) of the tip
+};
+
+/// For each designed end point of `shape` (none on shapes with plates), how far its limb
+/// stands apart and whether `g` has an end point there: what `Skeleton_quality`'s end
+/// count cannot tell, which tips are missed, the resolvable ones or those fused with
+/// their neighbours.
+template <class Graph>
+std::vector<Tip_recall> tip_recall(const Shape& shape, const Graph& g, double voxel_size)
+{
+  using quality_internal::V3;
+  using quality_internal::to_v3;
+  std::vector<Tip_recall> result;
+  if(shape.has_sheets() || !(voxel_size > 0))
+    return result;
+  std::vector<V3> ends;
+  for(auto range = boost::vertices(g); range.first != range.second; ++range.first)
+    if(boost::degree(*range.first, g) == 1)
+      ends.push_back(to_v3(g[*range.first].point));
+  const std::vector<Skeleton_polyline> axis = shape.skeleton_polylines(0.5 * voxel_size);
+  const double eps = 1e-9 * shape.bbox_diagonal();
+  for(const Skeleton_node& node : shape.skeleton_nodes()) {
+    if(node.degree != 1)
+      continue;
+    const V3 tip = to_v3(node.point);
+    Tip_recall t;
+    const double radius = std::max(0.0, -shape.signed_distance(node.point));
+    const double reach = std::max(3 * voxel_size, 3 * radius);
+    for(const V3& e : ends)
+      t.found = t.found || internal::norm(e - tip) <= reach;
+    for(std::size_t a = 0; a < axis.size(); ++a) {
+      const Skeleton_polyline& own = axis[a];
+      const std::size_t count = own.points.size();
+      if(count < 2)
+        continue;
+      const bool from_back = internal::norm(to_v3(own.points.back()) - tip) <= eps;
+      if(!from_back && internal::norm(to_v3(own.points.front()) - tip) > eps)
+        continue;
+      double length = 0;
+      for(std::size_t k = 0; k < count; ++k) {
+        const std::size_t i = from_back ? count - 1 - k : k;
+        const V3 p = to_v3(own.points[i]);
+        if(k > 0)
+          length += internal::norm(p - to_v3(own.points[from_back ? i + 1 : i - 1]));
+        double clearance = std::numeric_limits<double>::infinity();
+        for(std::size_t b = 0; b < axis.size(); ++b)
+          if(b != a) {
+            const std::pair<double, double> other = quality_internal::distance_to_polyline(p, axis[b]);
+            clearance = std::min(clearance, other.first - own.radii[i] - other.second);
+          }
+        if(clearance < voxel_size)
+          break;
+        t.free_voxels = length / voxel_size;
+      }
+      break;
+    }
+    result.push_back(t);
+  }
+  return result;
+}
+
 /// Measures `g` against the known skeleton of `shape`; `voxel_size` (input units) sets
 /// the tolerances (see `Quality_options` and the fields of `Skeleton_quality`).
 template <class Graph>
