@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# The whole test suite, as CI runs it: everything built with the tests (build/), then
-# ctest. With --hardened, two more steps:
+# The whole test suite: everything built with the tests (build/), then ctest. With
+# --hardened (what CI runs, .ci/run), two more steps:
 #   2. the readers and the tool rebuilt with AddressSanitizer and UndefinedBehaviorSanitizer
 #      (build-sanitize/) and their tests run again (df_l1_test_io, df_l1_test_tool, with
 #      the scans of ../shared/data; the thread-count determinism test, 125 runs, only in
