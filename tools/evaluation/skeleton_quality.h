@@ -271,6 +271,23 @@ inline std::size_t find_root(std::vector<std::size_t>& parent, std::size_t i)
   return i;
 }
 
+/// The curves of `axis` that start or end within `eps` of `c`, as (curve, walked from its
+/// back): a closed curve through `c` comes twice, once each way.
+inline std::vector<std::pair<std::size_t, bool>> curves_at(const std::vector<Skeleton_polyline>& axis, const V3& c,
+                                                         double eps)
+{
+  std::vector<std::pair<std::size_t, bool>> arms;
+  for(std::size_t i = 0; i < axis.size(); ++i) {
+    if(axis[i].points.size() < 2)
+      continue;
+    if(internal::norm(to_v3(axis[i].points.front()) - c) <= eps)
+      arms.emplace_back(i, false);
+    if(internal::norm(to_v3(axis[i].points.back()) - c) <= eps)
+      arms.emplace_back(i, true);
+  }
+  return arms;
+}
+
 } // namespace quality_internal
 
 /// A designed junction and the ball around it where its parts still overlap.
@@ -299,16 +316,7 @@ inline std::vector<Junction_zone> junction_zones(const Shape& shape, double sepa
     if(node.degree < 3)
       continue;
     const V3 c = to_v3(node.point);
-    // The incident curves, as (curve, walked from its back).
-    std::vector<std::pair<std::size_t, bool>> arms;
-    for(std::size_t i = 0; i < axis.size(); ++i) {
-      if(axis[i].points.size() < 2)
-        continue;
-      if(internal::norm(to_v3(axis[i].points.front()) - c) <= eps)
-        arms.emplace_back(i, false);
-      if(internal::norm(to_v3(axis[i].points.back()) - c) <= eps)
-        arms.emplace_back(i, true);
-    }
+    const std::vector<std::pair<std::size_t, bool>> arms = quality_internal::curves_at(axis, c, eps);
     Junction_zone zone{c, std::max(0.0, -shape.signed_distance(node.point))};
     for(const auto& a : arms)
       for(const auto& b : arms) {
@@ -369,14 +377,12 @@ std::vector<Tip_recall> tip_recall(const Shape& shape, const Graph& g, double vo
     const double reach = std::max(3 * voxel_size, 3 * radius);
     for(const V3& e : ends)
       t.found = t.found || internal::norm(e - tip) <= reach;
-    for(std::size_t a = 0; a < axis.size(); ++a) {
+    const std::vector<std::pair<std::size_t, bool>> arms = quality_internal::curves_at(axis, tip, eps);
+    if(!arms.empty()) {
+      const std::size_t a = arms.front().first;
+      const bool from_back = arms.front().second;
       const Skeleton_polyline& own = axis[a];
       const std::size_t count = own.points.size();
-      if(count < 2)
-        continue;
-      const bool from_back = internal::norm(to_v3(own.points.back()) - tip) <= eps;
-      if(!from_back && internal::norm(to_v3(own.points.front()) - tip) > eps)
-        continue;
       double length = 0;
       for(std::size_t k = 0; k < count; ++k) {
         const std::size_t i = from_back ? count - 1 - k : k;
@@ -393,7 +399,6 @@ std::vector<Tip_recall> tip_recall(const Shape& shape, const Graph& g, double vo
           break;
         t.free_voxels = length / voxel_size;
       }
-      break;
     }
     result.push_back(t);
   }
