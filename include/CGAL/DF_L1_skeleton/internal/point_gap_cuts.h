@@ -8,6 +8,8 @@
 
 #include <CGAL/number_utils.h>
 
+#include <Eigen/Eigenvalues>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -169,13 +171,47 @@ std::size_t cut_point_gaps(Skeleton_graph<Traits>& g, const std::vector<std::arr
       }
     };
     std::vector<Near_point> along;
+    // The share of the points that bound the interval [lo, hi] of the line (within a voxel
+    // of it, nearer the line than `near`) whose surface faces along the line: the normal
+    // of their 10 nearest neighbours makes less than 60 degrees with it. The surfaces of
+    // two parts face each other across a gap, while the wall of a part runs beside its
+    // axis, its normals across the line.
+    A direction{{0, 0, 0}}; // of the line that gap_width() examines
+    auto facing_share = [&](double lo, double hi, double near) {
+      std::size_t tested = 0, facing = 0;
+      for(const Near_point& a : along)
+      {
+        if(a.abscissa < lo - voxel || a.abscissa > hi + voxel || (a.abscissa >= lo && a.abscissa <= hi) ||
+           a.offset2 >= near * near)
+          continue;
+        grid.k_nearest(xyz[a.point], 10, [](std::size_t) { return true; }, nearest);
+        if(nearest.size() < 4)
+          continue;
+        Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+        for(const auto& n : nearest)
+          mean += Eigen::Vector3d(xyz[n.second][0], xyz[n.second][1], xyz[n.second][2]);
+        mean /= double(nearest.size());
+        Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
+        for(const auto& n : nearest)
+        {
+          const Eigen::Vector3d d = Eigen::Vector3d(xyz[n.second][0], xyz[n.second][1], xyz[n.second][2]) - mean;
+          covariance += d * d.transpose();
+        }
+        const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(covariance);
+        const Eigen::Vector3d normal = solver.eigenvectors().col(0);
+        ++tested;
+        facing += std::abs(normal.dot(Eigen::Vector3d(direction[0], direction[1], direction[2]))) > 0.5;
+      }
+      return tested == 0 ? 0.0 : double(facing) / double(tested);
+    };
     // Under noise the gap between two surfaces holds points too, but far fewer than the
     // surfaces that bound it, which cross the line there: the abscissas of the points near
     // the line show a valley between two peaks. Along a part its walls run beside the line
     // and project evenly; a hole of the scan on one side leaves half of them. The valley is
-    // a voxel wide, at most a quarter as dense as the lower of the densest voxel-wide
+    // a voxel wide, at most a third as dense as the lower of the densest voxel-wide
     // windows within 2 voxels on either side, which hold 12 points or more and come nearer
-    // the line than 0.7 of the local radius (unless `across_neck`, as for an empty gap).
+    // the line than 0.7 of the local radius (unless `across_neck`, as for an empty gap),
+    // and the surfaces that bound it face along the line (a noisy wall can thin out too).
     // Returns the valley's depth in voxels times a voxel (0 without a valley): a clean
     // empty gap of the same place ranks higher.
     std::vector<std::size_t> histogram;
@@ -216,9 +252,12 @@ std::size_t cut_point_gaps(Skeleton_graph<Traits>& g, const std::vector<std::arr
             right_offset2 = pair_offset2(k);
           }
         const std::size_t walls = (std::min)(left, right), inside = pair_count(c);
-        if(walls < 2 * dense_wall_points || 4 * inside > walls)
+        if(walls < 2 * dense_wall_points || 3 * inside > walls)
           continue;
         if(!across_neck && std::sqrt((std::max)(left_offset2, right_offset2)) >= 0.7 * (std::max)(r, voxel))
+          continue;
+        const double facing = facing_share(c * bin - reach_along, (c + 2) * bin - reach_along, (std::max)(r, voxel));
+        if(facing < 0.6)
           continue;
         best = (std::max)(best, voxel * (1 - double(inside) / double(walls)));
       }
@@ -234,6 +273,7 @@ std::size_t cut_point_gaps(Skeleton_graph<Traits>& g, const std::vector<std::arr
         return 0.0;
       for(double& c : t)
         c /= tl;
+      direction = t;
       const A p = pos(v);
       const double r = CGAL::to_double(g[v].radius);
       const double disk = r + voxel; // the surface around the curve
@@ -283,11 +323,20 @@ std::size_t cut_point_gaps(Skeleton_graph<Traits>& g, const std::vector<std::arr
         ++above;
       const bool near_line = across_neck || offset < 0.7 * (std::max)(r, voxel);
       const bool dense_walls = (std::min)(below, above) >= dense_wall_points && near_line;
+      if(dense_walls)
+        return widest;
       // the neighbour searches of the spacing test only where the walls did not decide
-      const bool is_gap = dense_walls || (widest >= min_width && (across_neck || offset < r) &&
-                                          widest >= local_spacing(along[gap].point) &&
-                                          widest >= local_spacing(along[gap + 1].point));
-      return is_gap ? widest : 0.0;
+      if(widest < min_width || widest < local_spacing(along[gap].point) || widest < local_spacing(along[gap + 1].point))
+        return 0.0;
+      if(across_neck || offset < r)
+        return widest;
+      // The depth of a part thinner than two voxels falls short of its radius by up to a
+      // voxel (its surface voxels hold its axis), so the points bounding a gap between two
+      // such parts may lie farther from the line than that depth: there the gap is told
+      // from a sampling gap by the surfaces facing each other across it.
+      const bool thin_gap = r < 2 * voxel && offset < r + voxel &&
+                            facing_share(along[gap].abscissa, along[gap + 1].abscissa, disk) >= 0.6;
+      return thin_gap ? widest : 0.0;
     };
     for(std::size_t v = 0; v < boost::num_vertices(g); ++v)
     {
