@@ -6,6 +6,7 @@
 
 #include <CGAL/DF_L1_skeleton.h>
 #include <CGAL/DF_L1_skeleton/internal/attach_fragments.h>
+#include <CGAL/DF_L1_skeleton/internal/curve_graph_editing.h>
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -400,4 +401,36 @@ TEST_CASE("final skeleton: a small fragment near a larger piece is attached, oth
   CHECK(boost::edge(fragment, Graph::vertex_descriptor(10), g).second);
   // a second call finds nothing more to attach
   CHECK(DF::internal::attach_fragments(g, xyz) == 0);
+}
+
+TEST_CASE("final skeleton: of two ends of one junction that meet, the shorter chain goes; apart, both stay", "[final]")
+{
+  using CGAL::DF_L1::internal::Curve_graph;
+  // a stem into a junction at the origin; two chains from it bow apart and meet again
+  // 0.4 apart (the halves of one limb around a pocket); a third chain ends far away
+  Curve_graph g;
+  const std::size_t stem = g.add_vertex({{-10, 0, 0}}), junction = g.add_vertex({{0, 0, 0}});
+  g.add_edge(stem, junction);
+  auto chain = [&](std::initializer_list<std::array<double, 3>> points) {
+    std::size_t previous = junction;
+    for(const auto& p : points)
+    {
+      const std::size_t v = g.add_vertex(p);
+      g.add_edge(previous, v);
+      previous = v;
+    }
+    return previous;
+  };
+  const std::size_t longer = chain({{{5, 3, 0}}, {{10, 3, 0}}, {{12, 0.2, 0}}});
+  const std::size_t shorter = chain({{{5, -2, 0}}, {{12, -0.2, 0}}});
+  const std::size_t apart = chain({{{0, 8, 0}}, {{0, 16, 0}}});
+  g.merge_twin_ends([](std::size_t, std::size_t) { return 1.0; });
+  CHECK(g.alive[longer]);
+  CHECK(g.alive[apart]);
+  CHECK_FALSE(g.alive[shorter]);
+  CHECK(g.adj[junction].size() == 3);
+  // tips farther apart than the threshold stay
+  Curve_graph h = g;
+  h.merge_twin_ends([](std::size_t, std::size_t) { return 0.1; });
+  CHECK(h.adj[junction].size() == 3);
 }

@@ -160,6 +160,13 @@ Skeleton_graph<Traits> build_skeleton_graph(const Contracted_samples<Traits>& sa
       const double rj = (std::max)(lookup.distance(g.x[junction]), 2 * voxel);
       return (std::max)(1.5 * rj, rj + 2 * (std::max)(lookup.distance(g.x[tip]), voxel));
     });
+    // Twin ends: two terminal chains from one junction whose tips lie within 1.5 times
+    // the larger of their depths (and a voxel) are the two halves of one limb around a
+    // pocket that the voxels kept inside (a noisy scan's flat hand); the shorter goes.
+    // Twice the depth still parts the feet of two legs 1 to 2 voxels apart.
+    g.merge_twin_ends([&](std::size_t a, std::size_t b) {
+      return 1.5 * (std::max)({lookup.distance(g.x[a]), lookup.distance(g.x[b]), voxel});
+    });
     merge_close_junctions(g, lookup);
   }
   else

@@ -90,6 +90,56 @@ struct Curve_graph
     }
   }
 
+  // Of two terminal chains that leave the same junction and whose end points lie within
+  // `twins(tip_a, tip_b)` of each other, removes the shorter (repeatedly): the two
+  // halves of one limb that the thinning parted around a pocket of its interior.
+  template <class Threshold>
+  void merge_twin_ends(const Threshold& twins)
+  {
+    struct Terminal
+    {
+      std::size_t tip, junction;
+      double length;
+      std::vector<std::size_t> chain;
+    };
+    for(bool changed = true; changed;)
+    {
+      changed = false;
+      std::vector<Terminal> terminals;
+      for(std::size_t e = 0; e < x.size(); ++e)
+      {
+        if(!alive[e] || adj[e].size() != 1)
+          continue;
+        Terminal t{e, e, 0.0, {e}};
+        std::size_t prev = e, v = adj[e][0];
+        while(adj[v].size() == 2)
+        {
+          t.chain.push_back(v);
+          t.length += length(prev, v);
+          const std::size_t next = adj[v][0] == prev ? adj[v][1] : adj[v][0];
+          prev = v;
+          v = next;
+        }
+        t.length += length(prev, v);
+        t.junction = v;
+        if(adj[v].size() >= 3)
+          terminals.push_back(std::move(t));
+      }
+      for(std::size_t i = 0; i < terminals.size() && !changed; ++i)
+        for(std::size_t j = i + 1; j < terminals.size() && !changed; ++j)
+        {
+          const Terminal& a = terminals[i];
+          const Terminal& b = terminals[j];
+          if(a.junction != b.junction || length(a.tip, b.tip) >= twins(a.tip, b.tip))
+            continue;
+          const Terminal& shorter = a.length < b.length || (a.length == b.length && a.tip > b.tip) ? a : b;
+          for(std::size_t c : shorter.chain)
+            remove_vertex(c);
+          changed = true;
+        }
+    }
+  }
+
   // Passes of Laplacian smoothing of the vertices of degree 2 (ends and junctions stay,
   // so that branches keep their length and meet where they met); a move is made only
   // when `accept(from, to)` agrees.
