@@ -102,6 +102,9 @@ std::vector<char> on_cycle_vertices(const Graph& g)
 // `thick_part_through`) is therefore also tested along the line that joins those parts,
 // without the distance test on the bounding points: inside one part that line runs
 // along its axis, and only a gap between two parts leaves an empty interval across it.
+// Where the distance test cannot decide (a noisy gap that holds some points, or parts
+// thinner than two voxels, whose depth falls short of their radius), the surfaces that
+// bound the gap must face along the line (`facing_share`).
 template <class Traits>
 std::size_t cut_point_gaps(Skeleton_graph<Traits>& g, const std::vector<std::array<double, 3>>& xyz, const Uniform_grid& grid,
                            double voxel, double spacing)
