@@ -74,18 +74,23 @@ double tree_tip_recall(int index, const std::string& degradation, bool* denoised
   return recall;
 }
 
-// The topology of the skeleton of a corpus case, as scripts/quality.sh measures it,
-// after checking that it is the designed one.
-Topology designed_topology_checked(const std::string& family, int index, const std::string& degradation)
+// The quality of the skeleton of a corpus case, measured as scripts/quality.sh does.
+Skeleton_quality corpus_case_quality(const Shape& shape, int index, const Degradation& d)
 {
-  const Shape shape = corpus_shape(family, index);
-  const Degradation d = corpus_degradation(degradation);
   const Sample sample = corpus_sample(shape, index, d);
   CGAL::DF_L1_skeletonization<K> s(sample.points);
   Quality_options qo;
   qo.junction_merge_radius_fraction = 1.0;
   qo.merge_within_junction_zones = true;
-  const Skeleton_quality q = measure_quality(shape, s.skeleton(), CGAL::to_double(s.distance_field().voxel_size), qo);
+  return measure_quality(shape, s.skeleton(), CGAL::to_double(s.distance_field().voxel_size), qo);
+}
+
+// The topology of the skeleton of a corpus case, after checking that it is the designed one.
+Topology designed_topology_checked(const std::string& family, int index, const std::string& degradation)
+{
+  const Shape shape = corpus_shape(family, index);
+  const Degradation d = corpus_degradation(degradation);
+  const Skeleton_quality q = corpus_case_quality(shape, index, d);
   INFO(shape.name() << ' ' << degradation << ": " << compact(q.topology) << " expected " << compact(shape.expected_topology()));
   CHECK(corpus_topology_matches(shape, q.topology, d.noisy));
   return q.topology;
@@ -109,12 +114,7 @@ TEST_CASE("corpus: a sample of families and degradations keeps its quality", "[c
     const int index = 7;
     const Shape shape = corpus_shape(family, index);
     for(const Degradation& d : picked) {
-      const Sample sample = corpus_sample(shape, index, d);
-      CGAL::DF_L1_skeletonization<K> s(sample.points);
-      Quality_options qo;
-      qo.junction_merge_radius_fraction = 1.0;
-      qo.merge_within_junction_zones = true;
-      const Skeleton_quality q = measure_quality(shape, s.skeleton(), CGAL::to_double(s.distance_field().voxel_size), qo);
+      const Skeleton_quality q = corpus_case_quality(shape, index, d);
       const bool ok = corpus_topology_matches(shape, q.topology, d.noisy);
       std::cout << "corpus sample " << shape.name() << ' ' << d.name << ": " << compact(q.topology) << " expected "
                 << compact(shape.expected_topology()) << (ok ? " ok" : " FAIL") << ", coverage " << q.axis_coverage

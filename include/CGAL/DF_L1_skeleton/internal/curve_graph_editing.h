@@ -56,6 +56,32 @@ struct Curve_graph
   std::size_t degree(std::size_t v) const { return adj[v].size(); }
   double length(std::size_t a, std::size_t b) const { return distance(x[a], x[b]); }
 
+  // The chain from end point `tip` to the first vertex of degree other than 2 (its
+  // junction, or the other end of an isolated curve): its vertices from the tip, not the
+  // junction, and its length.
+  struct Terminal_chain
+  {
+    std::vector<std::size_t> chain;
+    std::size_t junction;
+    double length;
+  };
+  Terminal_chain terminal_chain(std::size_t tip) const
+  {
+    Terminal_chain t{{tip}, tip, 0.0};
+    std::size_t prev = tip, v = adj[tip][0];
+    while(adj[v].size() == 2)
+    {
+      t.chain.push_back(v);
+      t.length += length(prev, v);
+      const std::size_t next = adj[v][0] == prev ? adj[v][1] : adj[v][0];
+      prev = v;
+      v = next;
+    }
+    t.length += length(prev, v);
+    t.junction = v;
+    return t;
+  }
+
   // Removes the terminal chains (from an end point to the first vertex of degree 3 or
   // more) shorter than `too_short(junction, tip)`, repeatedly, never removing a whole
   // component.
@@ -69,21 +95,10 @@ struct Curve_graph
       {
         if(!alive[e] || adj[e].size() != 1)
           continue;
-        std::vector<std::size_t> chain{e};
-        double len = 0;
-        std::size_t prev = e, v = adj[e][0];
-        while(adj[v].size() == 2)
-        {
-          chain.push_back(v);
-          len += length(prev, v);
-          const std::size_t next = adj[v][0] == prev ? adj[v][1] : adj[v][0];
-          prev = v;
-          v = next;
-        }
-        len += length(prev, v);
-        if(adj[v].size() < 3 || len >= too_short(v, e))
+        const Terminal_chain t = terminal_chain(e);
+        if(adj[t.junction].size() < 3 || t.length >= too_short(t.junction, e))
           continue;
-        for(std::size_t c : chain)
+        for(std::size_t c : t.chain)
           remove_vertex(c);
         changed = true;
       }
@@ -96,43 +111,26 @@ struct Curve_graph
   template <class Threshold>
   void merge_twin_ends(const Threshold& twins)
   {
-    struct Terminal
-    {
-      std::size_t tip, junction;
-      double length;
-      std::vector<std::size_t> chain;
-    };
     for(bool changed = true; changed;)
     {
       changed = false;
-      std::vector<Terminal> terminals;
+      std::vector<Terminal_chain> terminals;
       for(std::size_t e = 0; e < x.size(); ++e)
-      {
-        if(!alive[e] || adj[e].size() != 1)
-          continue;
-        Terminal t{e, e, 0.0, {e}};
-        std::size_t prev = e, v = adj[e][0];
-        while(adj[v].size() == 2)
+        if(alive[e] && adj[e].size() == 1)
         {
-          t.chain.push_back(v);
-          t.length += length(prev, v);
-          const std::size_t next = adj[v][0] == prev ? adj[v][1] : adj[v][0];
-          prev = v;
-          v = next;
+          Terminal_chain t = terminal_chain(e);
+          if(adj[t.junction].size() >= 3)
+            terminals.push_back(std::move(t));
         }
-        t.length += length(prev, v);
-        t.junction = v;
-        if(adj[v].size() >= 3)
-          terminals.push_back(std::move(t));
-      }
       for(std::size_t i = 0; i < terminals.size() && !changed; ++i)
         for(std::size_t j = i + 1; j < terminals.size() && !changed; ++j)
         {
-          const Terminal& a = terminals[i];
-          const Terminal& b = terminals[j];
-          if(a.junction != b.junction || length(a.tip, b.tip) >= twins(a.tip, b.tip))
+          const Terminal_chain& a = terminals[i];
+          const Terminal_chain& b = terminals[j];
+          const std::size_t tip_a = a.chain.front(), tip_b = b.chain.front();
+          if(a.junction != b.junction || length(tip_a, tip_b) >= twins(tip_a, tip_b))
             continue;
-          const Terminal& shorter = a.length < b.length || (a.length == b.length && a.tip > b.tip) ? a : b;
+          const Terminal_chain& shorter = a.length < b.length || (a.length == b.length && tip_a > tip_b) ? a : b;
           for(std::size_t c : shorter.chain)
             remove_vertex(c);
           changed = true;
