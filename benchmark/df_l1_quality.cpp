@@ -7,6 +7,7 @@
 // scripts/quality.sh runs it; see its header for the options.
 
 #include "quality_table.h"
+#include "evaluation/scan_variants.h"
 #include "evaluation/shape_corpus.h"
 #include "evaluation/skeleton_quality.h"
 
@@ -47,6 +48,7 @@ struct Options
   std::string previews = "failures"; // failures, all, none
   std::string scans_dir;
   std::string scan_filter;
+  std::vector<std::string> scan_variants; // degradations of every scan besides the scan itself
   bool corpus = true;
   std::string results, previous, markdown, label, command = "scripts/quality.sh";
   std::string scan_sheet, failure_sheet;
@@ -69,6 +71,7 @@ void usage(std::ostream& os)
 {
   os << "usage: df_l1_quality [--out DIR] [--families a,b] [--degradations a,b] [--shapes N] [--first K]\n"
         "         [--points N] [--jobs J] [--resolution V] [--previews failures|all|none] [--scans DIR|none] [--scan-filter NAME]\n"
+        "         [--scan-variants a,b|none]\n"
         "         [--no-corpus] [--results FILE.tsv] [--previous FILE.tsv] [--markdown FILE.md] [--label TEXT]\n"
         "         [--command TEXT] [--scan-sheet PATH] [--failure-sheet PATH] [--list] [--quiet]\n";
 }
@@ -130,16 +133,33 @@ Row run_corpus_case(const Options& o, const DF_L1_test::Shape& shape, const std:
   return row;
 }
 
-Row run_scan(const Options& o, const DF_L1_quality::Scan_expectation& e)
+// A real scan, or one of its degraded copies (scan_variants.h) when `variant` is not "-".
+Row run_scan(const Options& o, const DF_L1_quality::Scan_expectation& e, const std::string& variant)
 {
   Row row;
-  row.kind = "scan";
+  row.kind = variant == "-" ? "scan" : "scan_variant";
   row.name = e.file;
   row.family = "scan";
-  row.degradation = "-";
+  row.degradation = variant;
   row.expected = e.text();
   try {
-    const auto cloud = DF::read_point_cloud<K>(o.scans_dir + "/" + e.file);
+    auto cloud = DF::read_point_cloud<K>(o.scans_dir + "/" + e.file);
+    std::size_t scan_points = cloud.points.size();
+    if(variant != "-") {
+      std::vector<std::array<double, 3>> xyz;
+      for(const Point& p : cloud.points)
+        xyz.push_back({p.x(), p.y(), p.z()});
+      xyz = DF_L1_test::degrade_scan(xyz, variant, DF_L1_test::scan_seed(e.file), scan_points);
+      if(xyz.empty()) {
+        row.error = "not applicable";
+        row.got = "-";
+        row.ok = true;
+        return row;
+      }
+      cloud.points.clear();
+      for(const auto& p : xyz)
+        cloud.points.emplace_back(p[0], p[1], p[2]);
+    }
     row.points = cloud.points.size();
     const auto start = std::chrono::steady_clock::now();
     CGAL::DF_L1_skeletonization<K, CGAL::Sequential_tag> s(cloud.points, CGAL::parameters::voxel_resolution(o.resolution));
@@ -158,7 +178,7 @@ Row run_scan(const Options& o, const DF_L1_quality::Scan_expectation& e)
     const DF_L1_test::quality_internal::Segment_grid grid(segments, reach);
     const std::vector<bool>& outlier = s.outlier_flags();
     std::size_t kept = 0, near = 0;
-    for(std::size_t i = 0; i < cloud.points.size(); ++i) {
+    for(std::size_t i = 0; i < scan_points; ++i) { // the added outliers are not the scan's
       if(outlier[i])
         continue;
       ++kept;
@@ -178,8 +198,11 @@ Row run_scan(const Options& o, const DF_L1_quality::Scan_expectation& e)
       row.ok = row.ok && row.coverage >= e.min_points_near;
     if(o.previews != "none") {
       std::ostringstream title;
-      title << e.file << ": " << row.got << " (expected " << row.expected << "), near " << DF_L1_quality::fixed(row.coverage, 3);
-      write_preview(o.out_dir + "/scans/" + e.file + ".svg", cloud.points, title.str(), s);
+      title << e.file << (variant == "-" ? "" : " " + variant) << ": " << row.got << " (expected " << row.expected << "), near " << DF_L1_quality::fixed(row.coverage, 3);
+      if(variant == "-")
+        write_preview(o.out_dir + "/scans/" + e.file + ".svg", cloud.points, title.str(), s);
+      else if(o.previews == "all" || !row.ok)
+        write_preview(o.out_dir + "/previews/scan_" + e.file + "__" + variant + ".svg", cloud.points, title.str(), s);
     }
   } catch(const std::exception& ex) {
     row.error = ex.what();
@@ -195,6 +218,8 @@ int main(int argc, char* argv[])
   Options o;
   for(const auto& d : DF_L1_test::corpus_degradations())
     o.degradations.push_back(d.name);
+  for(const auto& v : DF_L1_test::scan_variants())
+    o.scan_variants.push_back(v.name);
   for(int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     auto value = [&]() -> std::string {
@@ -216,6 +241,16 @@ int main(int argc, char* argv[])
     else if(a == "--previews") o.previews = value();
     else if(a == "--scans") o.scans_dir = value();
     else if(a == "--scan-filter") o.scan_filter = value();
+    else if(a == "--scan-variants") {
+      const std::string v = value();
+      o.scan_variants = v == "none" ? std::vector<std::string>() : split(v);
+      for(const std::string& name : o.scan_variants)
+        if(std::none_of(DF_L1_test::scan_variants().begin(), DF_L1_test::scan_variants().end(),
+                        [&](const DF_L1_test::Scan_variant& known) { return known.name == name; })) {
+          std::cerr << "df_l1_quality: unknown scan variant " << name << "\n";
+          return 2;
+        }
+    }
     else if(a == "--no-corpus") o.corpus = false;
     else if(a == "--results") o.results = value();
     else if(a == "--previous") o.previous = value();
@@ -290,7 +325,10 @@ int main(int argc, char* argv[])
   }
 
   // Jobs run cases side by side, each on one thread (the results do not depend on it).
-  const std::size_t total = cases.size() + expectations.size();
+  // Every scan as it is, then every scan in each variant.
+  std::vector<std::string> scan_runs{"-"};
+  scan_runs.insert(scan_runs.end(), o.scan_variants.begin(), o.scan_variants.end());
+  const std::size_t total = cases.size() + expectations.size() * scan_runs.size();
   std::vector<Row> rows(total);
   std::atomic<std::size_t> next{0}, done{0};
   std::mutex print;
@@ -307,7 +345,10 @@ int main(int argc, char* argv[])
           const Case& c = cases[k];
           r = run_corpus_case(o, shapes[c.shape].second, shapes[c.shape].first, shape_index[c.shape], degradations[c.degradation]);
         } else
-          r = run_scan(o, expectations[k - cases.size()]);
+        {
+          const std::size_t j = k - cases.size();
+          r = run_scan(o, expectations[j % expectations.size()], scan_runs[j / expectations.size()]);
+        }
         rows[k] = r;
         const std::size_t finished = ++done;
         if(!o.quiet) {

@@ -9,6 +9,7 @@
 /// previous one.
 
 #include <CGAL/DF_L1_skeleton/IO/write_file_atomically.h>
+#include "evaluation/scan_variants.h"
 
 #include <algorithm>
 #include <cctype>
@@ -353,7 +354,24 @@ inline std::string markdown_report(const std::vector<Row>& rows, const std::vect
   md << "| mean outside fraction | " << fixed(all.outside, 4) << " | " << (has_prev ? fixed(prev_all.outside, 4) : "-") << " |\n";
   md << "| mean coverage | " << fixed(all.coverage, 3) << " | " << (has_prev ? fixed(prev_all.coverage, 3) : "-") << " |\n";
   md << "| real scans meeting their expectation | " << scans_ok << " / " << scans << " | "
-     << (prev_scans ? std::to_string(prev_scans_ok) + " / " + std::to_string(prev_scans) : "-") << " |\n\n";
+     << (prev_scans ? std::to_string(prev_scans_ok) + " / " + std::to_string(prev_scans) : "-") << " |\n";
+  {
+    std::size_t n = 0, ok = 0, prev_n = 0, prev_ok = 0;
+    for(const Row& r : rows)
+      if(r.kind == "scan_variant" && r.got != "-") {
+        ++n;
+        ok += r.ok;
+      }
+    for(const Row& r : previous)
+      if(r.kind == "scan_variant" && r.got != "-") {
+        ++prev_n;
+        prev_ok += r.ok;
+      }
+    if(n)
+      md << "| degraded real scans meeting the scan's expectation | " << ok << " / " << n << " | "
+         << (prev_n ? std::to_string(prev_ok) + " / " + std::to_string(prev_n) : "-") << " |\n";
+  }
+  md << "\n";
 
   // Targets of issue 19.
   double worst_family = 1, worst_degradation = 1;
@@ -492,6 +510,51 @@ inline std::string markdown_report(const std::vector<Row>& rows, const std::vect
   if(!ctx.scan_sheet.empty())
     md << "\nPreviews (final skeleton over the points, front/side/top; the initial skeleton below it):\n\n![scans]("
        << ctx.scan_sheet << ")\n";
+
+  // The degraded copies of the scans (scan_variants.h), one column per variant.
+  std::vector<std::string> variants;
+  for(const Row& r : rows)
+    if(r.kind == "scan_variant" && std::find(variants.begin(), variants.end(), r.degradation) == variants.end())
+      variants.push_back(r.degradation);
+  if(!variants.empty()) {
+    md << "\n## Degraded real scans\n\n";
+    md << "Each scan of the table above, degraded, against the same expectation:";
+    for(const DF_L1_test::Scan_variant& v : DF_L1_test::scan_variants())
+      if(std::find(variants.begin(), variants.end(), v.name) != variants.end())
+        md << " " << v.name << ": " << v.description << ";";
+    md << " the near share counts the scan's own points. A cell gives what failed and, in parentheses, the "
+          "previous run's result where it differs.\n\n| file |";
+    for(const std::string& v : variants)
+      md << ' ' << v << " |";
+    md << "\n|---|";
+    for(std::size_t i = 0; i < variants.size(); ++i)
+      md << "---|";
+    md << '\n';
+    auto cell = [](const Row& r) {
+      if(r.got == "-")
+        return std::string("-");
+      if(!r.error.empty())
+        return std::string("**error**");
+      return r.ok ? std::string("ok") : "**" + r.got + "**";
+    };
+    for(const Row& r : rows) {
+      if(r.kind != "scan")
+        continue;
+      md << "| " << r.name << " |";
+      for(const std::string& v : variants) {
+        std::string text = "-";
+        for(const Row& x : rows)
+          if(x.kind == "scan_variant" && x.name == r.name && x.degradation == v) {
+            text = cell(x);
+            for(const Row& p : previous)
+              if(p.kind == "scan_variant" && p.name == r.name && p.degradation == v && cell(p) != text)
+                text += " (" + cell(p) + ")";
+          }
+        md << ' ' << text << " |";
+      }
+      md << '\n';
+    }
+  }
 
   // Gains and losses case by case.
   if(has_prev) {

@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # The quality evaluation: the library with its defaults on the procedural corpus (208
-# shapes in 8 families x 9 degradations, tools/evaluation/shape_corpus.h) and on every real
+# shapes in 8 families x 10 degradations, tools/evaluation/shape_corpus.h) and on every real
 # scan of ../shared/data that has an expectation in expected_topology.json (skipped with
-# a message when the folder is absent). Writes benchmark/QUALITY.md with the previous
+# a message when the folder is absent), as it is and in 4 degraded copies
+# (tools/evaluation/scan_variants.h). Writes benchmark/QUALITY.md with the previous
 # run's figures beside the new ones (from the committed benchmark/quality_results.tsv,
 # which it then replaces), the scans' contact sheet benchmark/quality_scans.jpg, and the
 # previews of every failed case under build-quality/quality/ (not committed).
@@ -25,7 +26,7 @@ while [ $# -gt 0 ]; do
     --quick) quick=1 ;;
     --build-dir) build="$2"; out="$build/quality"; shift ;;
     --) shift; extra=("$@"); break ;;
-    -h|--help) sed -n '2,14p' "${BASH_SOURCE[0]}"; exit 0 ;;
+    -h|--help) sed -n '2,15p' "${BASH_SOURCE[0]}"; exit 0 ;;
     *) echo "quality.sh: unknown option $1" >&2; exit 2 ;;
   esac
   shift
@@ -80,7 +81,7 @@ render() { # sheet svg...
 if command -v rsvg-convert >/dev/null; then
   shopt -s nullglob
   render "$out/scans.png" "$out"/scans/*.svg
-  for family in thick_limbs tapering wavy trees loops sheets close_parts disjoint; do
+  for family in thick_limbs tapering wavy trees loops sheets close_parts disjoint scan; do
     failed=("$out"/previews/"$family"_*.svg)
     if [ ${#failed[@]} -gt 0 ]; then render "$out/failures_$family.png" "${failed[@]:0:12}"; fi
   done

@@ -209,7 +209,8 @@ public:
   }
 
   /// Voxelizes the kept and added points (`voxelize_point_set()`), without opening the
-  /// crotches (`open_crotches`) in the clouds it smoothed.
+  /// crotches (`open_crotches`) or a shell from the local spacing (`local_shell_bands`)
+  /// in the clouds it smoothed.
   void voxelize()
   {
     if(raw_grid_)
@@ -220,7 +221,8 @@ public:
       kept_and_added_points(), parameters::voxel_resolution(parameters_.voxel_resolution,
            parameters::initial_voxel_size(internal_initial_voxel_size(),
            parameters::exterior_propagation_steps(parameters_.exterior_propagation_steps,
-           parameters::open_crotches(!denoised_))))));
+           parameters::open_crotches(!denoised_,
+           parameters::local_shell_bands(!denoised_)))))));
   }
 
   /// Removes the outlier voxels (`remove_outlier_voxels()`) and flags their points.

@@ -229,3 +229,18 @@ TEST_CASE("corpus: twigs whose tips meet across a gap are parted where their tip
   for(const char* degradation : {"clean", "outliers_3", "holes"})
     CHECK(designed_topology_checked("trees", 20, degradation).cycles == 0);
 }
+
+TEST_CASE("corpus: the sparse half of an unevenly sampled 2,000-point cloud keeps its inside", "[corpus]")
+{
+  // Density falling 10:1 along the longest side at 2,000 points: the sparse end's samples
+  // lie 3 to 5 voxels apart. With one band for the voxelization's shell (from the median
+  // spacing), the rays of the parity vote and the lines of sight passed between them and
+  // the skeleton lost the inside there (each case below failed: a body, a ring, a scene
+  // of 3 objects, a handle); the shell now takes each boundary voxel's own spacing.
+  const auto run = designed_topology_checked;
+  run("thick_limbs", 0, "uneven_2000");
+  run("tapering", 0, "uneven_2000");
+  run("loops", 0, "uneven_2000");
+  run("disjoint", 1, "uneven_2000");
+  run("close_parts", 4, "uneven_2000");
+}

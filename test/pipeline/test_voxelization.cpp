@@ -13,6 +13,8 @@
 #include <CGAL/DF_L1_skeleton/upsample_sparse_regions.h>
 #include <CGAL/DF_L1_skeleton/voxelize_point_set.h>
 #include <CGAL/DF_L1_skeleton/internal/lines_of_sight.h>
+#include <CGAL/DF_L1_skeleton/internal/uniform_grid.h>
+#include <CGAL/DF_L1_skeleton/internal/voted_interior.h>
 #include <CGAL/DF_L1_skeleton/internal/voxel_components.h>
 #include <CGAL/DF_L1_skeleton/internal/voxel_curve_graph.h>
 
@@ -119,10 +121,14 @@ TEST_CASE("voxels: the interior survives holes, sparse and uneven sampling, and 
       INFO(name << " / " << DF_L1_test::to_string(variant));
       const auto shape = DF_L1_test::shape_by_name(name);
       const auto sample = DF_L1_test::make_sample(shape, variant, 20000, 7);
-      const auto grid = DF::voxelize_point_set(with_upsampling(sample.points));
+      const bool noisy = variant == Variant::noise;
+      // A noisy cloud is voxelized as DF_L1_skeletonization does once it has smoothed it:
+      // with one shell band for the whole cloud, since the scattered noise points would
+      // widen a shell banded by the local spacing (checked below).
+      const auto grid =
+        DF::voxelize_point_set(with_upsampling(sample.points), CGAL::parameters::local_shell_bands(!noisy));
       const auto field = DF::compute_distance_field(grid);
       const double s = grid.voxel_size;
-      const bool noisy = variant == Variant::noise;
 
       // Deep inside, the distance field reaches most of the inscribed radius. Before the
       // interior was protected from holes and sampling gaps, it was 1 voxel on the
@@ -134,7 +140,12 @@ TEST_CASE("voxels: the interior survives holes, sparse and uneven sampling, and 
       // Noise puts points inside the shape, whose voxels are boundary, not interior.
       CHECK(double(census.deep_interior) >= (noisy ? 0.6 : 0.75) * double(census.deep));
       if(noisy) // the noisy shell encloses empty voxels up to about 3 sigma outside
+      {
         CHECK(census.worst <= 3 * 0.01 * shape.bbox_diagonal() / s + 1.5);
+        // banded by the local spacing, up to about 2 voxels more (helix: 7.2 voxels, 3 sigma + 1.5 = 6.1)
+        const auto banded = DF::voxelize_point_set(with_upsampling(sample.points));
+        CHECK(DF_L1_test::interior_census(shape, banded).worst <= 3 * 0.01 * shape.bbox_diagonal() / s + 3.5);
+      }
       else
         CHECK(double(census.outside) <= 0.05 * double(census.interior));
 
@@ -352,5 +363,86 @@ TEST_CASE("voxels: interior voxels that see the exterior along many lines are op
       inside[v] = before[v] == std::uint8_t(L::INTERIOR);
     labels = before;
     CHECK(DF::internal::open_lines_of_sight(g, labels, inside, shell_of(g, labels), 10, 2) == 0);
+  }
+}
+
+TEST_CASE("voxels: the shell dilates each boundary voxel by the local sampling spacing", "[voxels][shell]")
+{
+  typedef DF::Voxel_label L;
+  DF::Grid_geometry<Kernel> g;
+  g.dims = {{30, 26, 22}};
+  g.voxel_size = 1;
+  g.origin = Kernel::Point_3(0, 0, 0);
+
+  SECTION("per-voxel bands: the union of each boundary voxel's ball")
+  {
+    DF_L1_test::internal::Rng rng(11);
+    std::vector<std::uint8_t> labels(g.size(), std::uint8_t(L::EXTERIOR));
+    std::vector<float> bands(g.size(), 1.0f);
+    std::vector<std::array<int, 3>> boundary;
+    for(int k = 0; k < g.dims[2]; ++k)
+      for(int j = 0; j < g.dims[1]; ++j)
+        for(int i = 0; i < g.dims[0]; ++i)
+          if(rng.uniform() < 0.01)
+          {
+            labels[g.index(i, j, k)] = std::uint8_t(L::BOUNDARY);
+            bands[g.index(i, j, k)] = float(rng.uniform(1, 3.6));
+            boundary.push_back({{i, j, k}});
+          }
+    const std::vector<char> shell = DF::internal::boundary_shell(g, labels, bands);
+    std::size_t mismatches = 0, inside = 0;
+    for(int k = 0; k < g.dims[2]; ++k)
+      for(int j = 0; j < g.dims[1]; ++j)
+        for(int i = 0; i < g.dims[0]; ++i)
+        {
+          bool expected = false;
+          for(const auto& b : boundary)
+          {
+            const float r = bands[g.index(b[0], b[1], b[2])];
+            const int d2 = (i - b[0]) * (i - b[0]) + (j - b[1]) * (j - b[1]) + (k - b[2]) * (k - b[2]);
+            expected = expected || float(d2) <= r * r + 1e-3f;
+          }
+          mismatches += expected != bool(shell[g.index(i, j, k)]);
+          inside += expected;
+        }
+    CHECK(mismatches == 0);
+    CHECK(inside > 4 * boundary.size());
+    // one band for all is the same as that band everywhere
+    CHECK(DF::internal::boundary_shell(g, labels, 2.0) ==
+          DF::internal::boundary_shell(g, labels, std::vector<float>(g.size(), 2.0f)));
+  }
+
+  SECTION("bands from the spacing: wide where the samples are sparse, the global band where dense")
+  {
+    // A plane z = 11.5 sampled every 0.5 voxel for x < 15 and every 4 voxels beyond: the
+    // 6th neighbour lies 1 voxel away on the dense side, 5.7 voxels on the sparse one.
+    std::vector<std::array<double, 3>> xyz;
+    for(double y = 0.25; y < 26; y += 0.5)
+      for(double x = 0.25; x < 15; x += 0.5)
+        xyz.push_back({x, y, 11.5});
+    for(double y = 0.5; y < 26; y += 4)
+      for(double x = 16.5; x < 30; x += 4)
+        xyz.push_back({x, y, 11.5});
+    std::vector<std::uint8_t> labels(g.size(), std::uint8_t(L::EXTERIOR));
+    for(const auto& p : xyz)
+      labels[g.index(int(p[0]), int(p[1]), int(p[2]))] = std::uint8_t(L::BOUNDARY);
+    const DF::internal::Uniform_grid grid(xyz, 0.5);
+    const std::vector<float> bands = DF::internal::local_shell_bands<CGAL::Sequential_tag>(g, labels, xyz, grid, 1.0, 3.0);
+    auto band_at = [&](double x, double y) { return bands[g.index(int(x), int(y), 11)]; };
+    CHECK(band_at(5.25, 5.25) == Approx(1.0));
+    CHECK(band_at(20.5, 8.5) == Approx(std::sqrt(32.0) / 2)); // half the diagonal of a 4 x 4 square
+    // the gaps of the sparse side close, as the dense side's do
+    const std::vector<char> shell = DF::internal::boundary_shell(g, labels, bands);
+    std::size_t open = 0;
+    for(int j = 2; j < 24; ++j)
+      for(int i = 18; i < 28; ++i)
+        open += !shell[g.index(i, j, 11)];
+    CHECK(open == 0);
+    const std::vector<char> uniform = DF::internal::boundary_shell(g, labels, 1.0);
+    std::size_t open_uniform = 0;
+    for(int j = 2; j < 24; ++j)
+      for(int i = 18; i < 28; ++i)
+        open_uniform += !uniform[g.index(i, j, 11)];
+    CHECK(open_uniform > 100);
   }
 }

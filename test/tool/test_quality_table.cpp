@@ -110,6 +110,15 @@ TEST_CASE("quality report: shares per family and degradation, the previous run b
   scan.expected = "components 1, cycles 0";
   scan.got = "components 1, cycles 2, ends 5";
   now.push_back(scan);
+  // the scan thinned to 2,000 points: failed before, passes now
+  Row thinned = scan;
+  thinned.kind = "scan_variant";
+  thinned.degradation = "sparse_2000";
+  thinned.got = "components 3, cycles 0, ends 11";
+  previous.push_back(thinned);
+  thinned.got = "components 1, cycles 0, ends 6";
+  thinned.ok = true;
+  now.push_back(thinned);
   DF_L1_quality::Report_context ctx;
   ctx.command = "scripts/quality.sh";
   ctx.families = {"trees", "loops"};
@@ -120,9 +129,13 @@ TEST_CASE("quality report: shares per family and degradation, the previous run b
   // trees: 50 % now in both columns, the previous shares in parentheses where they differ
   CHECK(md.find("| trees | 100 (0) | 0 (100) | 50 |") != std::string::npos);
   CHECK(md.find("| loops | 100 | 100 | 100 |") != std::string::npos);
-  CHECK(md.find("Gained 1, lost 1.") != std::string::npos);
+  CHECK(md.find("Gained 2, lost 1.") != std::string::npos);
   CHECK(md.find("Lost: trees_1 holes (2/0/0/1, expected 3/1/0/1)") != std::string::npos);
   CHECK(md.find("| horse.off |") != std::string::npos);
+  CHECK(md.find("| degraded real scans meeting the scan's expectation | 1 / 1 | 0 / 1 |") != std::string::npos);
+  CHECK(md.find("| file | sparse_2000 |") != std::string::npos);
+  CHECK(md.find("| horse.off | ok (**components 3, cycles 0, ends 11**) |") != std::string::npos);
+  CHECK(md.find("horse.off sparse_2000") != std::string::npos); // among the gains
   // tips found by class: clean 3 of 4 now (1 before), holes 1 of 2 (none designed before)
   CHECK(md.find("| clean | 75 (25) of 4 | - | - | 100 of 2 |") != std::string::npos);
   CHECK(md.find("| holes | - | 50 of 2 | - | - |") != std::string::npos);

@@ -988,6 +988,11 @@ inline std::vector<Degradation> corpus_degradations()
   d.push_back({"holes", Variant::holes, {}, false});
   d.push_back({"uneven", Variant::uneven, {}, false});
   d.push_back({"sparse_2000", Variant::sparse, {}, false});
+  // A scan's sparse regions are sparser still when its density varies (a mesh's large
+  // triangles on a body, the far side of a LiDAR crown).
+  Degradation sparse_uneven{"uneven_2000", Variant::uneven, {}, false};
+  sparse_uneven.options.uneven_count = 2000;
+  d.push_back(sparse_uneven);
   return d;
 }
 

@@ -1019,6 +1019,7 @@ struct Variant_options
   double hole_radius_factor = 0.6;  ///< holes: patch radius / local tube radius
   double uneven_ratio = 10;         ///< uneven: density at the low end / at the high end
   std::size_t sparse_count = 2000;  ///< sparse: number of points (n is ignored)
+  std::size_t uneven_count = 0;     ///< uneven: number of points when not 0 (n is then ignored)
 };
 
 /// A generated point cloud.
@@ -1147,6 +1148,8 @@ inline Sample make_sample(const Shape& shape, Variant variant, std::size_t n, st
 
   if(variant == Variant::sparse)
     n = options.sparse_count;
+  if(variant == Variant::uneven && options.uneven_count)
+    n = options.uneven_count;
   std::size_t outliers = 0;
   if(variant == Variant::outliers)
     outliers = std::min(n, std::size_t(std::llround(options.outlier_fraction * double(n))));

@@ -51,6 +51,7 @@ enum df_l1_denoising_neighbors_t { df_l1_denoising_neighbors };
 enum df_l1_thin_parts_t { df_l1_thin_parts };
 enum df_l1_occupied_depth_t { df_l1_occupied_depth };
 enum df_l1_open_crotches_t { df_l1_open_crotches };
+enum df_l1_local_shell_bands_t { df_l1_local_shell_bands };
 enum df_l1_surface_noise_t { df_l1_surface_noise };
 enum df_l1_max_memory_t { df_l1_max_memory };
 } // namespace internal_np
@@ -134,6 +135,13 @@ CGAL_DF_L1_ADD_NAMED_PARAMETER(df_l1_max_memory, max_memory)
 /// sweeping balls (default `true`; `DF_L1_skeletonization` turns it off for smoothed
 /// noisy clouds, whose ragged shell lets the lines into the surface layer).
 CGAL_DF_L1_ADD_NAMED_PARAMETER(df_l1_open_crotches, open_crotches)
+/// \ingroup PkgDFL1SkeletonNamedParameters
+/// Whether the voxelization's shell (the boundary voxels dilated to close the gaps
+/// between samples, which the parity vote and the lines of sight cross) takes its width
+/// from the local sampling spacing at each boundary voxel rather than from the median
+/// spacing of the cloud (default `true`; `DF_L1_skeletonization` turns it off for
+/// smoothed noisy clouds, whose scattered residual points would thicken it).
+CGAL_DF_L1_ADD_NAMED_PARAMETER(df_l1_local_shell_bands, local_shell_bands)
 /// \ingroup PkgDFL1SkeletonNamedParameters
 /// The refinement method, a `CGAL::DF_L1::Skeletonization_method` (default
 /// `DISTANCE_FIELD_GUIDED`; `L1_MEDIAL` switches the guidance off, as a baseline).

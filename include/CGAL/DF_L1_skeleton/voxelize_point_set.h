@@ -23,6 +23,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -83,6 +84,15 @@ namespace DF_L1 {
 ///     \cgalParamType{`bool`}
 ///     \cgalParamDefault{`true`}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{local_shell_bands}
+///     \cgalParamDescription{whether the shell of dilated boundary voxels that the parity vote and the lines of
+///       sight cross is dilated by the local sampling spacing (half the distance from a point of the voxel to
+///       its 6th nearest neighbour, at least the global band, at most half the coarsest voxel) rather than by
+///       one band for the whole cloud; `DF_L1_skeletonization` turns it off for the clouds it smoothed, whose
+///       scattered residual points would thicken the shell across the crotches}
+///     \cgalParamType{`bool`}
+///     \cgalParamDefault{`true`}
+///   \cgalParamNEnd
 ///   \cgalParamNBegin{exterior_propagation_steps}
 ///     \cgalParamDescription{neighbour steps of the exterior inside boundary voxels at each level
 ///       (the paper takes one)}
@@ -113,6 +123,8 @@ voxelize_point_set(const PointRange& points, const NamedParameters& np = paramet
   const int steps = internal::exterior_propagation_steps(np, "voxelization");
   const bool open_crotches =
     parameters::choose_parameter(parameters::get_parameter(np, internal_np::df_l1_open_crotches), true);
+  const bool local_bands =
+    parameters::choose_parameter(parameters::get_parameter(np, internal_np::df_l1_local_shell_bands), true);
 
   const double finest = longest / V;
   // Rounded down: a coarsest level coarser than s0 would enclose more empty space.
@@ -146,6 +158,7 @@ voxelize_point_set(const PointRange& points, const NamedParameters& np = paramet
   // (the distance found does not depend on it): a first radius of 2 voxels gathered
   // thousands of points per ball in dense clouds (1M points: about 1 s).
   double h = 0;
+  std::unique_ptr<internal::Uniform_grid> point_grid; // kept for the local bands of the shell
   internal::run_both<ConcurrencyTag>(
     [&] {
       for(int level = 0; level < refinements; ++level)
@@ -156,8 +169,13 @@ voxelize_point_set(const PointRange& points, const NamedParameters& np = paramet
       }
     },
     [&] {
-      if(refinements > 0)
-        h = internal::median_kth_neighbour_distance(xyz, 6, finest / 2) / finest;
+      if(refinements > 0 && xyz.size() > 6)
+      {
+        point_grid = std::make_unique<internal::Uniform_grid>(xyz, finest / 2);
+        h = internal::median_kth_neighbour_distance(xyz, 6, finest / 2, *point_grid) / finest;
+        if(!local_bands)
+          point_grid.reset();
+      }
     });
   if(refinements > 0)
   {
@@ -166,7 +184,11 @@ voxelize_point_set(const PointRange& points, const NamedParameters& np = paramet
     const double large = (std::max)(coarsest, 2 * h), small = (std::max)(coarsest / 2, h);
     const double small_ball_volume = 4.0 / 3.0 * 3.14159265358979 * small * small * small;
     const double band = (std::max)(1.0, h / 2);
-    const std::vector<char> shell = internal::boundary_shell(g, labels, band);
+    const std::vector<char> shell =
+      point_grid ? internal::boundary_shell(
+                     g, labels, internal::local_shell_bands<ConcurrencyTag>(g, labels, xyz, *point_grid, band, coarsest / 2))
+                 : internal::boundary_shell(g, labels, band);
+    point_grid.reset();
     const std::vector<char> inside =
       internal::voted_interior<ConcurrencyTag>(g, labels, shell, band, small_ball_volume);
     internal::sweep_exterior_with_balls<ConcurrencyTag>(g, labels, inside, large, small, 3 * large);

@@ -5,8 +5,9 @@
 
 /// \file sampling_spacing.h
 /// The sampling spacing of a point cloud: the median distance from a point to its k-th
-/// nearest neighbour. Not part of the public API.
+/// nearest neighbour, and that distance at chosen points. Not part of the public API.
 
+#include <CGAL/DF_L1_skeleton/internal/parallel_for.h>
 #include <CGAL/DF_L1_skeleton/internal/uniform_grid.h>
 
 #include <algorithm>
@@ -14,6 +15,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 namespace CGAL {
@@ -51,6 +53,41 @@ inline double median_kth_neighbour_distance(const std::vector<std::array<double,
   }
   std::nth_element(kth.begin(), kth.begin() + kth.size() / 2, kth.end());
   return kth[kth.size() / 2];
+}
+
+// The distance from each point xyz[queries[q]] to its k-th nearest neighbour (input
+// units; infinity when the cloud has k points or fewer), by the search of
+// median_kth_neighbour_distance(). Each query writes only its own result, so the
+// result does not depend on the threads.
+template <class ConcurrencyTag>
+std::vector<double> kth_neighbour_distances(const std::vector<std::array<double, 3>>& xyz,
+                                            const std::vector<std::size_t>& queries, int k, double guess,
+                                            const Uniform_grid& grid)
+{
+  std::vector<double> out(queries.size(), std::numeric_limits<double>::infinity());
+  if(xyz.size() <= std::size_t(k) || !(guess > 0))
+    return out;
+  for_each_range<ConcurrencyTag>(queries.size(), [&](std::size_t begin, std::size_t end) {
+    std::vector<double> d2;
+    for(std::size_t q = begin; q < end; ++q)
+    {
+      const std::size_t i = queries[q];
+      for(double r = guess;; r *= 2)
+      {
+        d2.clear();
+        grid.for_each_in_ball(xyz[i], r, [&](std::size_t j, double d) {
+          if(j != i)
+            d2.push_back(d);
+          return true;
+        });
+        if(d2.size() >= std::size_t(k))
+          break;
+      }
+      std::nth_element(d2.begin(), d2.begin() + (k - 1), d2.end());
+      out[q] = std::sqrt(d2[std::size_t(k - 1)]);
+    }
+  }, 256);
+  return out;
 }
 
 // The same, on a grid of cell size `guess` built here.

@@ -12,6 +12,8 @@
 #include <CGAL/DF_L1_skeleton/internal/face_connected_growth.h>
 #include <CGAL/DF_L1_skeleton/internal/parallel_for.h>
 #include <CGAL/DF_L1_skeleton/internal/parity_vote.h>
+#include <CGAL/DF_L1_skeleton/internal/sampling_spacing.h>
+#include <CGAL/DF_L1_skeleton/internal/uniform_grid.h>
 #include <CGAL/DF_L1_skeleton/internal/voxel_components.h>
 #include <CGAL/DF_L1_skeleton/internal/voxel_morphology.h>
 
@@ -20,11 +22,78 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 namespace CGAL {
 namespace DF_L1 {
 namespace internal {
+
+// Per voxel, the band of boundary_shell(): at a boundary voxel, half the distance
+// (voxels) from its first point to that point's 6th nearest neighbour, the local
+// sampling spacing, kept within [band, max(band, cap)]; `band` elsewhere. A scan's
+// sampling is rarely even (the large triangles of a mesh on a body, the occlusions of a
+// crown): with one band for all, the sparse regions leave gaps that the rays and the
+// lines of sight pass through, and their inside is lost. `grid` holds `xyz`.
+template <class ConcurrencyTag, class Traits>
+std::vector<float> local_shell_bands(const Grid_geometry<Traits>& g, const std::vector<std::uint8_t>& labels,
+                                     const std::vector<std::array<double, 3>>& xyz, const Uniform_grid& grid,
+                                     double band, double cap)
+{
+  const std::size_t none = std::numeric_limits<std::size_t>::max();
+  const double ox = CGAL::to_double(g.origin.x()), oy = CGAL::to_double(g.origin.y()),
+               oz = CGAL::to_double(g.origin.z()), voxel = CGAL::to_double(g.voxel_size);
+  std::vector<std::size_t> first(g.size(), none);
+  for(std::size_t i = 0; i < xyz.size(); ++i)
+  {
+    // the arithmetic of mark_points(), which made the boundary voxels
+    const std::size_t v = g.index(std::clamp(int(std::floor((xyz[i][0] - ox) / voxel)), 0, g.dims[0] - 1),
+                                  std::clamp(int(std::floor((xyz[i][1] - oy) / voxel)), 0, g.dims[1] - 1),
+                                  std::clamp(int(std::floor((xyz[i][2] - oz) / voxel)), 0, g.dims[2] - 1));
+    if(labels[v] == std::uint8_t(Voxel_label::BOUNDARY) && first[v] == none)
+      first[v] = i;
+  }
+  std::vector<std::size_t> voxels, queries;
+  for(std::size_t v = 0; v < first.size(); ++v)
+    if(first[v] != none)
+    {
+      voxels.push_back(v);
+      queries.push_back(first[v]);
+    }
+  const std::vector<double> spacing = kth_neighbour_distances<ConcurrencyTag>(xyz, queries, 6, voxel / 2, grid);
+  std::vector<float> bands(g.size(), float(band));
+  const double most = (std::max)(band, cap);
+  for(std::size_t q = 0; q < voxels.size(); ++q)
+    bands[voxels[q]] = float(std::clamp(spacing[q] / voxel / 2, band, most));
+  return bands;
+}
+
+// The boundary voxels, each dilated by its own band (voxels; `band` is read at the
+// boundary voxels): the shell closes the gaps of a sparse region without thickening it
+// where the samples are dense.
+template <class Traits>
+std::vector<char> boundary_shell(const Grid_geometry<Traits>& g, const std::vector<std::uint8_t>& labels,
+                                 const std::vector<float>& band)
+{
+  // Voxel offsets have integer squared lengths: bands with the same floor(band^2) give
+  // the same ball, so the boundary voxels dilate in a few groups.
+  std::vector<int> radii2;
+  for(std::size_t v = 0; v < labels.size(); ++v)
+    if(labels[v] == std::uint8_t(Voxel_label::BOUNDARY))
+      radii2.push_back(int(float(band[v] * band[v]) + 1e-3f));
+  std::sort(radii2.begin(), radii2.end());
+  radii2.erase(std::unique(radii2.begin(), radii2.end()), radii2.end());
+  std::vector<char> shell(labels.size(), 0), group(labels.size());
+  for(int r2 : radii2)
+  {
+    for(std::size_t v = 0; v < labels.size(); ++v)
+      group[v] = labels[v] == std::uint8_t(Voxel_label::BOUNDARY) && int(float(band[v] * band[v]) + 1e-3f) == r2;
+    const std::vector<char> d = dilate_by_ball(group, g.dims, double(r2) + 1e-3);
+    for(std::size_t v = 0; v < labels.size(); ++v)
+      shell[v] = shell[v] || d[v];
+  }
+  return shell;
+}
 
 // Votes (of 26) for "inside", averaged over a voxel's 5x5x5 box. A majority (14 or
 // more) starts an inside region; flood-exterior voxels joined to one keep growing it down
