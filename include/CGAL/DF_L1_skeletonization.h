@@ -233,7 +233,21 @@ public:
     voxelize();
     grid_ = std::make_unique<Voxel_grid>(DF_L1::remove_outlier_voxels(
       *raw_grid_, parameters::outlier_component_size(resolved_outlier_component_size()), &outlier_voxel_statistics_));
-    outliers_ = DF_L1::flag_outlier_points(points_, *grid_);
+    if(denoised_)
+    {
+      // The voxels of a smoothed cloud hold the smoothed positions; the noisy ones lie
+      // about the noise off that shell (judged there, half of a noisy scan's points fell
+      // in empty voxels). A point that the smoothing moved by more than 4 times the
+      // estimated noise (the fits' residual, which underestimates the noise by about a
+      // fifth: some 3 sigma) was no noise of the surface but an outlier drawn onto it.
+      const std::vector<Point> smoothed = smoothed_input_points();
+      outliers_ = DF_L1::flag_outlier_points(smoothed, *grid_);
+      const double reach = 4 * surface_noise_;
+      for(std::size_t i = 0; i < points_.size(); ++i)
+        outliers_[i] = outliers_[i] || CGAL::to_double(CGAL::squared_distance(points_[i], smoothed[i])) > reach * reach;
+    }
+    else
+      outliers_ = DF_L1::flag_outlier_points(points_, *grid_);
     outlier_count_ = 0;
     for(std::size_t i = 0; i < points_.size(); ++i)
     {
@@ -327,7 +341,8 @@ public:
     // A piece much smaller than another and near it is a fragment of it whose connection
     // the scan missed (`internal::attach_fragments()`).
     if(DF_L1::skeleton_statistics(*skeleton_).components > 1)
-      DF_L1::internal::attach_fragments(*skeleton_, DF_L1::internal::to_xyz(points_, CGAL::Identity_property_map<Point>()));
+      DF_L1::internal::attach_fragments(
+        *skeleton_, DF_L1::internal::to_xyz(denoised_ ? smoothed_input_points() : points_, CGAL::Identity_property_map<Point>()));
   }
 
   /// Runs every stage that has not run and copies the final skeleton into `skeleton`.
@@ -345,7 +360,8 @@ public:
   const std::vector<Point>& input_points() const { return in_input_units(input_points_, points_); }
   /// the number of input points
   std::size_t number_of_input_points() const { return points_.size(); }
-  /// one flag per input point: scattered outliers and points of outlier voxels
+  /// one flag per input point: scattered outliers and points of outlier voxels (or of no
+  /// voxel; a smoothed cloud's points are located at their smoothed positions)
   const std::vector<bool>& outlier_flags() { remove_outlier_voxels(); return outliers_; }
   /// number of input points flagged as outliers
   std::size_t number_of_outliers() { remove_outlier_voxels(); return outlier_count_; }
@@ -679,6 +695,17 @@ private:
   {
     return parameters_.outlier_component_size ? *parameters_.outlier_component_size
                                               : DF_L1::internal::default_outlier_component_size(raw_grid_->dims);
+  }
+
+  // the input points, each non-outlier at its smoothed position (input order)
+  std::vector<Point> smoothed_input_points() const
+  {
+    std::vector<Point> result = points_;
+    std::size_t kept = 0;
+    for(std::size_t i = 0; i < points_.size(); ++i)
+      if(!sparse_outliers_[i])
+        result[i] = kept_points_[kept++];
+    return result;
   }
 
   // the points the grid and the contraction are built from
