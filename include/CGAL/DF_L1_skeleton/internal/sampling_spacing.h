@@ -22,6 +22,27 @@ namespace CGAL {
 namespace DF_L1 {
 namespace internal {
 
+// The distance from xyz[i] to its k-th nearest neighbour, searched in balls of radius
+// `guess`, doubled until they hold k other points; the cloud has more than k points.
+// `d2` is scratch memory.
+inline double kth_neighbour_distance(const std::vector<std::array<double, 3>>& xyz, std::size_t i, int k, double guess,
+                                     const Uniform_grid& grid, std::vector<double>& d2)
+{
+  for(double r = guess;; r *= 2)
+  {
+    d2.clear();
+    grid.for_each_in_ball(xyz[i], r, [&](std::size_t j, double d) {
+      if(j != i)
+        d2.push_back(d);
+      return true;
+    });
+    if(d2.size() >= std::size_t(k))
+      break;
+  }
+  std::nth_element(d2.begin(), d2.begin() + (k - 1), d2.end());
+  return std::sqrt(d2[std::size_t(k - 1)]);
+}
+
 // Median distance from a point to its k-th nearest neighbour, over up to 4000 points
 // taken at a regular stride (deterministic): the sampling spacing of the cloud, in
 // input units. `guess` is the first search radius; `grid` holds `xyz`.
@@ -35,30 +56,14 @@ inline double median_kth_neighbour_distance(const std::vector<std::array<double,
   std::vector<double> kth, d2;
   kth.reserve(samples);
   for(std::size_t s = 0; s < samples; ++s)
-  {
-    const std::size_t i = s * n / samples;
-    for(double r = guess;; r *= 2)
-    {
-      d2.clear();
-      grid.for_each_in_ball(xyz[i], r, [&](std::size_t j, double d) {
-        if(j != i)
-          d2.push_back(d);
-        return true;
-      });
-      if(d2.size() >= std::size_t(k))
-        break;
-    }
-    std::nth_element(d2.begin(), d2.begin() + (k - 1), d2.end());
-    kth.push_back(std::sqrt(d2[k - 1]));
-  }
+    kth.push_back(kth_neighbour_distance(xyz, s * n / samples, k, guess, grid, d2));
   std::nth_element(kth.begin(), kth.begin() + kth.size() / 2, kth.end());
   return kth[kth.size() / 2];
 }
 
 // The distance from each point xyz[queries[q]] to its k-th nearest neighbour (input
-// units; infinity when the cloud has k points or fewer), by the search of
-// median_kth_neighbour_distance(). Each query writes only its own result, so the
-// result does not depend on the threads.
+// units; infinity when the cloud has k points or fewer). Each query writes only its own
+// result, so the result does not depend on the threads.
 template <class ConcurrencyTag>
 std::vector<double> kth_neighbour_distances(const std::vector<std::array<double, 3>>& xyz,
                                             const std::vector<std::size_t>& queries, int k, double guess,
@@ -70,22 +75,7 @@ std::vector<double> kth_neighbour_distances(const std::vector<std::array<double,
   for_each_range<ConcurrencyTag>(queries.size(), [&](std::size_t begin, std::size_t end) {
     std::vector<double> d2;
     for(std::size_t q = begin; q < end; ++q)
-    {
-      const std::size_t i = queries[q];
-      for(double r = guess;; r *= 2)
-      {
-        d2.clear();
-        grid.for_each_in_ball(xyz[i], r, [&](std::size_t j, double d) {
-          if(j != i)
-            d2.push_back(d);
-          return true;
-        });
-        if(d2.size() >= std::size_t(k))
-          break;
-      }
-      std::nth_element(d2.begin(), d2.begin() + (k - 1), d2.end());
-      out[q] = std::sqrt(d2[std::size_t(k - 1)]);
-    }
+      out[q] = kth_neighbour_distance(xyz, queries[q], k, guess, grid, d2);
   }, 256);
   return out;
 }

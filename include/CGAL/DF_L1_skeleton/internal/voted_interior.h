@@ -16,6 +16,7 @@
 #include <CGAL/DF_L1_skeleton/internal/uniform_grid.h>
 #include <CGAL/DF_L1_skeleton/internal/voxel_components.h>
 #include <CGAL/DF_L1_skeleton/internal/voxel_morphology.h>
+#include <CGAL/DF_L1_skeleton/internal/voxel_refinement.h>
 
 #include <algorithm>
 #include <array>
@@ -41,15 +42,11 @@ std::vector<float> local_shell_bands(const Grid_geometry<Traits>& g, const std::
                                      double band, double cap)
 {
   const std::size_t none = std::numeric_limits<std::size_t>::max();
-  const double ox = CGAL::to_double(g.origin.x()), oy = CGAL::to_double(g.origin.y()),
-               oz = CGAL::to_double(g.origin.z()), voxel = CGAL::to_double(g.voxel_size);
+  const double voxel = CGAL::to_double(g.voxel_size);
   std::vector<std::size_t> first(g.size(), none);
   for(std::size_t i = 0; i < xyz.size(); ++i)
   {
-    // the arithmetic of mark_points(), which made the boundary voxels
-    const std::size_t v = g.index(std::clamp(int(std::floor((xyz[i][0] - ox) / voxel)), 0, g.dims[0] - 1),
-                                  std::clamp(int(std::floor((xyz[i][1] - oy) / voxel)), 0, g.dims[1] - 1),
-                                  std::clamp(int(std::floor((xyz[i][2] - oz) / voxel)), 0, g.dims[2] - 1));
+    const std::size_t v = voxel_of_point(g, xyz[i]); // the voxel that mark_points() marked
     if(labels[v] == std::uint8_t(Voxel_label::BOUNDARY) && first[v] == none)
       first[v] = i;
   }

@@ -26,22 +26,25 @@ namespace internal {
 // Sub-voxels of boundary voxels whose label is not known yet.
 constexpr std::uint8_t UNDECIDED = 255;
 
+// The index of the voxel that holds `p`: the same arithmetic as Grid_geometry::locate(),
+// so that a point is later found in the voxel it marked; clamping only matters for points
+// on the grid's last face.
+template <class Traits>
+std::size_t voxel_of_point(const Grid_geometry<Traits>& g, const std::array<double, 3>& p)
+{
+  const double s = CGAL::to_double(g.voxel_size);
+  const int i = std::clamp(int(std::floor((p[0] - CGAL::to_double(g.origin.x())) / s)), 0, g.dims[0] - 1);
+  const int j = std::clamp(int(std::floor((p[1] - CGAL::to_double(g.origin.y())) / s)), 0, g.dims[1] - 1);
+  const int k = std::clamp(int(std::floor((p[2] - CGAL::to_double(g.origin.z())) / s)), 0, g.dims[2] - 1);
+  return g.index(i, j, k);
+}
+
 template <class Traits>
 void mark_points(Grid_geometry<Traits>& g, std::vector<std::uint8_t>& labels,
                  const std::vector<std::array<double, 3>>& xyz)
 {
-  const double ox = CGAL::to_double(g.origin.x()), oy = CGAL::to_double(g.origin.y()),
-               oz = CGAL::to_double(g.origin.z());
-  const double s = CGAL::to_double(g.voxel_size);
   for(const std::array<double, 3>& p : xyz)
-  {
-    // The same arithmetic as Grid_geometry::locate(), so that a point is later found in
-    // the voxel it marked; clamping only matters for points on the grid's last face.
-    const int i = std::clamp(int(std::floor((p[0] - ox) / s)), 0, g.dims[0] - 1);
-    const int j = std::clamp(int(std::floor((p[1] - oy) / s)), 0, g.dims[1] - 1);
-    const int k = std::clamp(int(std::floor((p[2] - oz) / s)), 0, g.dims[2] - 1);
-    labels[g.index(i, j, k)] = std::uint8_t(Voxel_label::BOUNDARY);
-  }
+    labels[voxel_of_point(g, p)] = std::uint8_t(Voxel_label::BOUNDARY);
 }
 
 // Exterior = what a 6-connected walk from the grid border reaches without entering a
