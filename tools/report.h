@@ -74,6 +74,7 @@ std::string report_json(const Settings& s, CGAL::DF_L1_skeletonization<Kernel, C
       .number("contraction_stages", skeletonization.contraction_stages());
   Json_object counts;
   counts.number("input_points", double(skeletonization.number_of_input_points()))
+    .number("analysed_points", double(skeletonization.number_of_analysed_points()))
     .number("added_points", double(skeletonization.added_points().size()))
     .number("outlier_points", double(skeletonization.number_of_outliers()))
     .number("sparse_outlier_points", double(skeletonization.number_of_sparse_outliers()))

@@ -22,6 +22,7 @@
 #include <CGAL/DF_L1_skeleton/extract_initial_skeleton.h>
 #include <CGAL/DF_L1_skeleton/flag_sparse_outliers.h>
 #include <CGAL/DF_L1_skeleton/internal/attach_fragments.h>
+#include <CGAL/DF_L1_skeleton/internal/density_cap.h>
 #include <CGAL/DF_L1_skeleton/internal/memory_estimate.h>
 #include <CGAL/DF_L1_skeleton/internal/normalization.h>
 #include <CGAL/DF_L1_skeleton/internal/point_gap_cuts.h>
@@ -147,12 +148,22 @@ public:
   /// it has already run.
   /// @{
 
-  /// Flags the scattered outliers (`flag_sparse_outliers()`).
+  /// Flags the scattered outliers (`flag_sparse_outliers()`). In a cloud denser than its
+  /// voxels can show (more points than twice the occupied cells of a third of the finest
+  /// voxel), the test runs on a uniform sample of about two points per occupied cell, and
+  /// a point outside the sample is an outlier when no unflagged point of the sample lies
+  /// within a cell around it (\ref design_density_cap).
   void flag_outliers()
   {
     if(!sparse_outliers_.empty())
       return;
-    sparse_outliers_ = DF_L1::flag_sparse_outliers<ConcurrencyTag>(points_);
+    const DF_L1::internal::Density_cap cells(points_.size(), point_coordinates(), [](std::size_t) { return true; },
+                                             density_cell_size(), 1, 4, 0.5);
+    if(cells.active())
+      sparse_outliers_ = DF_L1::internal::sampled_sparse_outliers<ConcurrencyTag>(
+        points_, density_cell_size(), (std::max)(std::size_t(1), points_.size() / (2 * cells.representatives().size())));
+    if(sparse_outliers_.empty())
+      sparse_outliers_ = DF_L1::flag_sparse_outliers<ConcurrencyTag>(points_);
     sparse_outlier_count_ = 0;
     for(bool b : sparse_outliers_)
       sparse_outlier_count_ += b;
@@ -173,9 +184,20 @@ public:
     if(denoise_checked_)
       return;
     flag_outliers();
+    // A cloud denser than its voxels can show (more points than cells of a third of the
+    // finest voxel, the paper's 3 x 3 x 3 subdivision) is analysed through
+    // representatives: the first non-outlier point of each such cell in input order. Every
+    // occupied cell keeps one, so the voxels are marked much as with all the points; a
+    // point left out shares its cell with its representative and takes its voxel's
+    // outlier flag and its displacement by the smoothing. The stages from here to the
+    // contraction then cost as much at 10 million points as at the few hundred thousand
+    // that the voxels can tell apart (`number_of_analysed_points()`).
+    density_cap_ = DF_L1::internal::Density_cap(
+      points_.size(), point_coordinates(), [this](std::size_t i) { return !sparse_outliers_[i]; }, density_cell_size(),
+      1, 4, 0.5);
     kept_points_.clear();
     for(std::size_t i = 0; i < points_.size(); ++i)
-      if(!sparse_outliers_[i])
+      if(!sparse_outliers_[i] && density_cap_.is_representative(i))
         kept_points_.push_back(points_[i]);
     // one fitter, and so one grid, for the noise estimate and the smoothing (the points
     // were checked by flag_outliers())
@@ -248,6 +270,16 @@ public:
     }
     else
       outliers_ = DF_L1::flag_outlier_points(points_, *grid_);
+    // A point left out by the density cap goes with its owner: its own voxel may have
+    // been marked by no representative.
+    if(density_cap_.active())
+    {
+      const std::vector<char> owner_flag =
+        for_each_left_out<char>(2, [&](std::size_t i) { return char(outliers_[owner_of(i)]); });
+      for(std::size_t i = 0; i < points_.size(); ++i)
+        if(owner_flag[i] != 2)
+          outliers_[i] = owner_flag[i] != 0;
+    }
     outlier_count_ = 0;
     for(std::size_t i = 0; i < points_.size(); ++i)
     {
@@ -299,7 +331,7 @@ public:
       if(DF_L1::internal::cut_point_gaps(initial_->graph, xyz, grid, voxel, spacing) > 0)
         DF_L1::internal::prune_spurs(initial_->graph, parameters_.spur_length_ratio, voxel, surface_noise_);
     }
-    DF_L1::assign_points_to_skeleton<ConcurrencyTag>(points_, outliers_, initial_->graph);
+    assign_points(initial_->graph);
   }
 
   /// Runs one support-radius stage of the contraction of samples of the kept and added
@@ -337,7 +369,7 @@ public:
       return;
     contract_until_convergence();
     skeleton_ = std::make_unique<Skeleton>(DF_L1::build_skeleton_graph(*contracted_, *field_, *initial_));
-    DF_L1::assign_points_to_skeleton<ConcurrencyTag>(points_, outliers_, *skeleton_);
+    assign_points(*skeleton_);
     // A piece much smaller than another and near it is a fragment of it whose connection
     // the scan missed (`internal::attach_fragments()`).
     if(DF_L1::skeleton_statistics(*skeleton_).components > 1)
@@ -367,6 +399,14 @@ public:
   std::size_t number_of_outliers() { remove_outlier_voxels(); return outlier_count_; }
   /// number of input points flagged by `flag_sparse_outliers()` alone
   std::size_t number_of_sparse_outliers() { flag_outliers(); return sparse_outlier_count_; }
+  /// the number of input points that the stages from the smoothing to the contraction
+  /// analyse: the non-outliers, or their representatives in a cloud denser than its
+  /// voxels can show (`denoise()`)
+  std::size_t number_of_analysed_points()
+  {
+    denoise();
+    return density_cap_.active() ? density_cap_.representatives().size() : points_.size() - sparse_outlier_count_;
+  }
   /// the estimated noise of the surface, input units (`estimate_surface_noise()`)
   double surface_noise() { denoise(); return normalization_.to_input(surface_noise_); }
   /// how the noise estimate grows from 10 to 40 neighbours per fit; the points are
@@ -376,7 +416,8 @@ public:
   /// whether the points were smoothed before voxelization
   bool denoised() { denoise(); return denoised_; }
   /// the points that are not scattered outliers, in input order, at the positions the
-  /// later stages use (smoothed when `denoised()`)
+  /// later stages use (smoothed when `denoised()`); in a cloud denser than its voxels, only
+  /// the representatives (`number_of_analysed_points()`)
   const std::vector<Point>& kept_points() { denoise(); return in_input_units(kept_points_in_input_units_, kept_points_); }
   /// the points added in sparse regions
   const std::vector<Point>& added_points() { upsample(); return in_input_units(added_points_in_input_units_, added_points_); }
@@ -563,6 +604,7 @@ private:
     if(first <= 1)
     {
       denoise_checked_ = denoised_ = false;
+      density_cap_ = DF_L1::internal::Density_cap();
       surface_noise_ = residual_growth_ = 0;
       kept_points_.clear();
       kept_points_in_input_units_.reset();
@@ -656,6 +698,8 @@ private:
   {
     DF_L1::internal::Voxel_stage_counts counts;
     counts.points = double(points_.size());
+    if(density_cap_.active())
+      counts.analysed_points = double(kept_points_.size());
     counts.added_points = double(added_points_.size());
     counts.voxels = double(field_->size());
     counts.interior_voxels =
@@ -697,15 +741,114 @@ private:
                                               : DF_L1::internal::default_outlier_component_size(raw_grid_->dims);
   }
 
-  // the input points, each non-outlier at its smoothed position (input order)
+  // the input points, each non-outlier at its smoothed position (input order); a point
+  // left out by the density cap moved as its owner
   std::vector<Point> smoothed_input_points() const
   {
     std::vector<Point> result = points_;
     std::size_t kept = 0;
     for(std::size_t i = 0; i < points_.size(); ++i)
-      if(!sparse_outliers_[i])
+      if(!sparse_outliers_[i] && density_cap_.is_representative(i))
         result[i] = kept_points_[kept++];
+    if(density_cap_.active())
+    {
+      for(std::size_t i = 0; i < points_.size(); ++i)
+      {
+        if(sparse_outliers_[i] || density_cap_.is_representative(i))
+          continue;
+        const std::size_t owner = owner_of(i);
+        result[i] = points_[i] + (result[owner] - points_[owner]);
+      }
+    }
     return result;
+  }
+
+  // Assigns every non-outlier input point to its nearest vertex of `g`
+  // (`assign_points_to_skeleton()`); through the density cap, the representatives, and
+  // each point left out to the vertex of its representative.
+  void assign_points(Skeleton& g) const
+  {
+    if(!density_cap_.active())
+    {
+      DF_L1::assign_points_to_skeleton<ConcurrencyTag>(points_, outliers_, g);
+      return;
+    }
+    const std::vector<std::size_t>& representatives = density_cap_.representatives();
+    std::vector<Point> analysed;
+    std::vector<bool> analysed_outliers;
+    analysed.reserve(representatives.size());
+    analysed_outliers.reserve(representatives.size());
+    for(std::size_t i : representatives)
+    {
+      analysed.push_back(points_[i]);
+      analysed_outliers.push_back(outliers_[i]);
+    }
+    DF_L1::assign_points_to_skeleton<ConcurrencyTag>(analysed, analysed_outliers, g);
+    const std::size_t none = std::size_t(-1);
+    std::vector<std::size_t> vertex_of(representatives.size(), none);
+    for(std::size_t v = 0; v < boost::num_vertices(g); ++v)
+    {
+      for(std::size_t r : g[v].points)
+        vertex_of[r] = v;
+      g[v].points.clear();
+    }
+    // the vertex of each point (in parallel), then the lists in point order
+    const auto xyz = point_coordinates();
+    const std::vector<std::size_t> vertex = for_each_left_out<std::size_t>(none, [&](std::size_t i) {
+      return outliers_[i] ? none : vertex_of[density_cap_.owner(xyz(i))];
+    });
+    for(std::size_t r = 0; r < representatives.size(); ++r)
+      vertex_of[r] = outliers_[representatives[r]] ? none : vertex_of[r];
+    std::vector<std::size_t> count(boost::num_vertices(g), 0);
+    for(std::size_t i = 0, r = 0; i < points_.size(); ++i)
+    {
+      const std::size_t v = density_cap_.is_representative(i) ? vertex_of[r++] : vertex[i];
+      if(v != none)
+        ++count[v];
+    }
+    for(std::size_t v = 0; v < boost::num_vertices(g); ++v)
+      g[v].points.reserve(count[v]);
+    for(std::size_t i = 0, r = 0; i < points_.size(); ++i)
+    {
+      const std::size_t v = density_cap_.is_representative(i) ? vertex_of[r++] : vertex[i];
+      if(v != none)
+        g[v].points.push_back(i);
+    }
+  }
+
+  // f(i) for every input point i left out by the density cap, in parallel, `other` for
+  // the rest: one value per input point
+  template <class T, class F>
+  std::vector<T> for_each_left_out(T other, const F& f) const
+  {
+    std::vector<T> result(points_.size(), other);
+    DF_L1::internal::for_each_range<ConcurrencyTag>(points_.size(), [&](std::size_t begin, std::size_t end) {
+      for(std::size_t i = begin; i < end; ++i)
+        if(!density_cap_.is_representative(i) && !sparse_outliers_[i])
+          result[i] = f(i);
+    }, 1 << 14);
+    return result;
+  }
+
+  // the cells of the density cap: a third of the finest voxel (the paper's 3 x 3 x 3
+  // subdivision)
+  double density_cell_size() const { return longest_side_ / (3.0 * parameters_.voxel_resolution); }
+  // the coordinates of the input point i, for the density cap
+  auto point_coordinates() const
+  {
+    return [this](std::size_t i) {
+      return std::array<double, 3>{{CGAL::to_double(points_[i].x()), CGAL::to_double(points_[i].y()),
+                                    CGAL::to_double(points_[i].z())}};
+    };
+  }
+
+  // the input index of the representative that stands for the input point i, left out
+  // by the density cap
+  std::size_t owner_of(std::size_t i) const
+  {
+    const Point& p = points_[i];
+    return density_cap_.representatives()[density_cap_.owner(
+      {{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())}})];
   }
 
   // the points the grid and the contraction are built from
@@ -726,6 +869,7 @@ private:
   std::unique_ptr<DF_L1::internal::Memory_estimate> refined_memory_; // from the distance field, once known
   DF_L1::Parameters parameters_;
 
+  DF_L1::internal::Density_cap density_cap_; // the points the stages analyse
   std::vector<bool> sparse_outliers_, outliers_;
   std::size_t sparse_outlier_count_ = 0, outlier_count_ = 0;
   bool denoise_checked_ = false, denoised_ = false;

@@ -432,6 +432,13 @@ class Skeletonization:
         """The number of input points flagged as scattered outliers."""
         return self._impl.number_of_sparse_outliers
 
+    @property
+    def number_of_analysed_points(self) -> int:
+        """The number of points the stages from the smoothing to the contraction analyse:
+        the non-outliers, or one per cell of a third of a voxel in a cloud denser than its
+        voxels (the density cap; every point is still flagged and assigned)."""
+        return self._impl.number_of_analysed_points
+
     def outlier_flags(self) -> np.ndarray:
         """(N,) bool array: the outlier flag of every input point."""
         return self._impl.outlier_flags()

@@ -777,6 +777,9 @@ PYBIND11_MODULE(_df_l1_skeleton, m)
   w.def_property_readonly("number_of_sparse_outliers", [](Stagewise& self) {
     return self.call([](Skeletonization& s) { return s.number_of_sparse_outliers(); });
   });
+  w.def_property_readonly("number_of_analysed_points", [](Stagewise& self) {
+    return self.call([](Skeletonization& s) { return s.number_of_analysed_points(); });
+  });
   w.def_property_readonly("number_of_outliers", [](Stagewise& self) {
     return self.call([](Skeletonization& s) { return s.number_of_outliers(); });
   });

@@ -254,3 +254,16 @@ def test_stub_and_signature_list_every_parameter():
     for name in dfl1.PARAMETERS:
         assert name in dfl1.skeletonize.__doc__ and isinstance(getattr(dfl1.Skeletonization, name), property)
         assert re.search(rf"^    {name}: ", stub, re.M)  # the Skeletonization properties
+
+
+def test_dense_cloud_is_analysed_through_representatives():
+    # 200,000 points of the capsule at V = 30: some 20 points per cell of a third of a
+    # voxel on its surface; every point still has a label
+    points = cloud_array(200000, seed=5)
+    s = dfl1.Skeletonization(points, voxel_resolution=30)
+    assert 1000 < s.number_of_analysed_points < len(points) // 5
+    final = s.skeleton()
+    assert (final.point_labels >= 0).sum() == len(points) - s.number_of_outliers
+    assert len(final.vertices) > 2 and len(final.edges) == len(final.vertices) - 1  # one curve, no cycle
+    sparse = dfl1.Skeletonization(cloud_array(3000), voxel_resolution=30)
+    assert sparse.number_of_analysed_points == 3000 - sparse.number_of_sparse_outliers

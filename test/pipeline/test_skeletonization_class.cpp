@@ -278,3 +278,62 @@ TEST_CASE("skeletonization class: the memory estimate is refined from the distan
   limited.set_max_memory(1.001 * refined);
   CHECK_NOTHROW(limited.extract_initial_skeleton());
 }
+
+TEST_CASE("skeletonization class: a cloud denser than its voxels is analysed through representatives",
+          "[class][density]")
+{
+  // 120,000 points with 10 % outliers at V = 30: some 10 points per cell of a third of a
+  // voxel on the surface. The outlier test runs on a sample and the later stages on one
+  // point per such cell; every point is still flagged and assigned, and the skeleton is
+  // that of the shape.
+  const DF_L1_test::Shape torus = DF_L1_test::shape_by_name("torus");
+  const DF_L1_test::Sample sample = DF_L1_test::make_sample(torus, DF_L1_test::Variant::outliers, 120000, 4);
+  Skeletonization dense(sample.points, CGAL::parameters::voxel_resolution(30));
+  const std::size_t n = sample.points.size();
+  CHECK(dense.number_of_analysed_points() < n / 8);
+  CHECK(dense.number_of_analysed_points() > 1000);
+
+  // The outliers are flagged, the surface points are not.
+  std::size_t surface = 0, surface_flagged = 0, outliers = 0, outliers_flagged = 0;
+  for(std::size_t i = 0; i < n; ++i)
+  {
+    const bool flagged = dense.outlier_flags()[i];
+    if(sample.is_outlier[i])
+      ++outliers, outliers_flagged += flagged;
+    else
+      ++surface, surface_flagged += flagged;
+  }
+  CHECK(double(surface_flagged) < 0.005 * double(surface));
+  CHECK(double(outliers_flagged) > 0.6 * double(outliers));
+
+  const auto& skeleton = dense.skeleton();
+  const DF::Skeleton_statistics stats = DF::skeleton_statistics(skeleton);
+  CHECK(stats.components == 1);
+  CHECK(stats.cycles == 1);
+  CHECK(stats.end_points == 0);
+  // centred: every vertex within half a voxel (0.35 of the tube radius at V = 30) of the
+  // torus's circle, and a tenth of the radius on average (0.08 to 0.10 over four seeds;
+  // the same with every point tested for outliers)
+  double mean_offset = 0;
+  for(std::size_t v = 0; v < boost::num_vertices(skeleton); ++v)
+  {
+    const double offset =
+      torus.distance_to_axis(skeleton[v].point) / torus.radius_at_nearest_axis_point(skeleton[v].point);
+    CHECK(offset < 0.35);
+    mean_offset += offset / double(boost::num_vertices(skeleton));
+  }
+  CHECK(mean_offset < 0.15);
+  // every non-outlier point stands behind exactly one vertex
+  std::vector<int> owners(n, 0);
+  for(std::size_t v = 0; v < boost::num_vertices(skeleton); ++v)
+    for(std::size_t i : skeleton[v].points)
+      ++owners[i];
+  std::size_t wrong = 0;
+  for(std::size_t i = 0; i < n; ++i)
+    wrong += owners[i] != (dense.outlier_flags()[i] ? 0 : 1);
+  CHECK(wrong == 0);
+
+  // A cloud no denser than its voxels is analysed whole.
+  Skeletonization sparse(DF_L1_test::make_sample(torus, DF_L1_test::Variant::clean, 8000, 4).points);
+  CHECK(sparse.number_of_analysed_points() == 8000);
+}

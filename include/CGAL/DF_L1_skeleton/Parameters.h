@@ -199,7 +199,7 @@ inline const std::vector<Parameter_info>& parameter_table()
      [](const Parameters& p) { return internal::optional_value(p.upsampling_radius); },
      [](Parameters& p, double x) { p.upsampling_radius = x; },
      [](const Parameters& p) { return p.upsampling_radius.has_value(); }},
-    {"voxel_resolution", "denoise", K::INTEGER, 3, 2048, false, false, {}, "100", "V",
+    {"voxel_resolution", "flag_outliers", K::INTEGER, 3, 2048, false, false, {}, "100", "V",
      "voxels along the longest side of the bounding box", {},
      [](const Parameters& p) { return double(p.voxel_resolution); },
      [](Parameters& p, double x) { p.voxel_resolution = int(x); }},

@@ -12,11 +12,14 @@
 #include <CGAL/DF_L1_skeleton/internal/uniform_grid.h>
 
 #include <CGAL/Named_function_parameters.h>
+#include <CGAL/number_utils.h>
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/tags.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
 #include <limits>
 #include <type_traits>
@@ -192,6 +195,112 @@ std::vector<bool> flag_sparse_outliers(const PointRange& points, unsigned int k 
     flags[index[s]] = flagged[s] != 0;
   return flags;
 }
+
+namespace internal {
+
+// Whether the point of index i belongs to the sample of one point in `every`: a hash of
+// the index, so that the sample is spread evenly whatever the order of the points (a
+// scan's lines, a generator's shapes).
+inline bool in_sample(std::size_t i, std::size_t every)
+{
+  std::uint64_t z = std::uint64_t(i) + 0x9e3779b97f4a7c15ull; // splitmix64
+  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
+  z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
+  z ^= z >> 31;
+  return z % every == 0;
+}
+
+// The flags of flag_sparse_outliers() for a cloud far denser than its voxels, where a
+// test of every point would cost a neighbour search per point: the test runs on a
+// uniform sample of one point in `every`, which thins the surface and the scattered
+// points alike and so keeps them apart (one point per cell would not: it would bring the
+// surface down to the density of the outliers). A point outside the sample is an outlier
+// when no unflagged point of the sample lies in its cell of size `cell` or the 26 around
+// it: a scattered point is alone there, a point of the surface has the sample's points
+// of the surface around it. Returns an empty vector when the sample is too small or the
+// cells too many for this to hold (the caller then tests every point).
+template <class ConcurrencyTag, class Point>
+std::vector<bool> sampled_sparse_outliers(const std::vector<Point>& points, double cell, std::size_t every)
+{
+  const std::size_t n = points.size();
+  const auto xyz = [&](std::size_t i) {
+    return std::array<double, 3>{{CGAL::to_double(points[i].x()), CGAL::to_double(points[i].y()),
+                                  CGAL::to_double(points[i].z())}};
+  };
+  std::vector<std::size_t> sample;
+  for(std::size_t i = 0; i < n; ++i)
+    if(in_sample(i, every))
+      sample.push_back(i);
+  if(n == 0 || !(cell > 0) || sample.size() < 1000)
+    return {};
+  std::array<double, 3> lo = xyz(0), hi = lo;
+  for(std::size_t i = 0; i < n; ++i)
+  {
+    const std::array<double, 3> p = xyz(i);
+    for(int a = 0; a < 3; ++a)
+    {
+      lo[a] = (std::min)(lo[a], p[a]);
+      hi[a] = (std::max)(hi[a], p[a]);
+    }
+  }
+  std::array<std::size_t, 3> dims;
+  double cells = 1;
+  for(int a = 0; a < 3; ++a)
+  {
+    const double d = std::floor((hi[a] - lo[a]) / cell) + 1;
+    cells *= d;
+    dims[a] = std::size_t((std::min)(d, 1e9));
+  }
+  if(!(cells <= 8 * double(n)))
+    return {};
+  const auto cell_of = [&](const std::array<double, 3>& p) {
+    std::array<std::size_t, 3> c;
+    for(int a = 0; a < 3; ++a)
+    {
+      const double x = std::floor((p[a] - lo[a]) / cell);
+      c[a] = x <= 0 ? 0 : (std::min)(std::size_t(x), dims[a] - 1);
+    }
+    return c;
+  };
+
+  std::vector<Point> sampled;
+  sampled.reserve(sample.size());
+  for(std::size_t i : sample)
+    sampled.push_back(points[i]);
+  const std::vector<bool> sample_flags = flag_sparse_outliers<ConcurrencyTag>(sampled);
+  std::vector<Point>().swap(sampled);
+
+  // the cells that hold an unflagged point of the sample
+  std::vector<std::uint64_t> kept((dims[0] * dims[1] * dims[2] + 63) / 64, 0);
+  for(std::size_t s = 0; s < sample.size(); ++s)
+    if(!sample_flags[s])
+    {
+      const std::array<std::size_t, 3> c = cell_of(xyz(sample[s]));
+      const std::size_t index = (c[2] * dims[1] + c[1]) * dims[0] + c[0];
+      kept[index / 64] |= std::uint64_t(1) << (index % 64);
+    }
+  std::vector<char> flags(n, 0);
+  for_each_range<ConcurrencyTag>(n, [&](std::size_t begin, std::size_t end) {
+    for(std::size_t i = begin; i < end; ++i)
+    {
+      const std::array<std::size_t, 3> c = cell_of(xyz(i));
+      bool near = false;
+      for(std::size_t z = c[2] ? c[2] - 1 : 0; z <= (std::min)(c[2] + 1, dims[2] - 1) && !near; ++z)
+        for(std::size_t y = c[1] ? c[1] - 1 : 0; y <= (std::min)(c[1] + 1, dims[1] - 1) && !near; ++y)
+          for(std::size_t x = c[0] ? c[0] - 1 : 0; x <= (std::min)(c[0] + 1, dims[0] - 1) && !near; ++x)
+          {
+            const std::size_t index = (z * dims[1] + y) * dims[0] + x;
+            near = (kept[index / 64] >> (index % 64)) & 1;
+          }
+      flags[i] = !near;
+    }
+  }, 1 << 14);
+  for(std::size_t s = 0; s < sample.size(); ++s)
+    flags[sample[s]] = sample_flags[s];
+  return std::vector<bool>(flags.begin(), flags.end());
+}
+
+} // namespace internal
 
 } // namespace DF_L1
 } // namespace CGAL

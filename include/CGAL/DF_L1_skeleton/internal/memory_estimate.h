@@ -77,6 +77,7 @@ inline Memory_estimate initial_memory_estimate(double points, double voxels)
 struct Voxel_stage_counts
 {
   double points = 0;          // input points
+  double analysed_points = -1; // the points the stages after the outlier test analyse (< 0: all)
   double added_points = 0;    // points added by the upsampling
   double voxels = 0;          // voxels of the finest grid
   double interior_voxels = 0; // of the distance field
@@ -128,6 +129,11 @@ constexpr double memory_occupied_repair_bytes_per_voxel = 11 + 32;
 // Per point, while the voxels exist: the caller's points and normals (24 + 24, the
 // tool's cloud) and the class's points and kept points (24 + 24); 24 per added point.
 constexpr double memory_held_bytes_per_point = 96;
+// Per input point of a cloud analysed through representatives (whose point stages
+// hold only a sample or the representatives): the caller's and the class's points
+// (24 + 24), the pages of the file being read (the tool), the flags and the density
+// cap's arrays; 100 to 115 B measured at 10M points (clean and noisy stick figures).
+constexpr double memory_dense_cloud_bytes_per_point = 110;
 constexpr double memory_held_bytes_per_added_point = 24;
 
 // The largest of the phases of the run, for the grid as built: the point stages (the
@@ -145,16 +151,21 @@ inline Memory_estimate refined_memory_estimate(const Voxel_stage_counts& c)
                        (std::max)({search * c.voxels,
                                    thinning * c.voxels + memory_thinning_bytes_per_interior_voxel * c.interior_voxels,
                                    repair * c.voxels});
-  const double held_points = memory_held_bytes_per_point * c.points + memory_held_bytes_per_added_point * c.added_points;
+  const double analysed = c.analysed_points < 0 ? c.points : c.analysed_points;
+  // the kept points are the analysed ones
+  const double held_points = (memory_held_bytes_per_point - 24) * c.points + 24 * analysed +
+                             memory_held_bytes_per_added_point * c.added_points;
   Memory_estimate e;
   e.points = c.points;
   e.voxels = c.voxels;
   e.refined = true;
-  const double point_phase = memory_bytes_per_point * c.points + held * c.voxels;
+  const double point_stages =
+    (std::max)(memory_dense_cloud_bytes_per_point * c.points, memory_bytes_per_point * analysed);
+  const double point_phase = point_stages + held * c.voxels;
   const double voxel_phase = held_points + held * c.voxels + stage;
   if(point_phase >= voxel_phase)
   {
-    e.point_bytes = memory_bytes_per_point * c.points;
+    e.point_bytes = point_stages;
     e.voxel_bytes = held * c.voxels;
   }
   else
