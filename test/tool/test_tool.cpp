@@ -824,12 +824,17 @@ std::string deterministic_report(const std::string& path)
 // machine: the tool runs in an arena of exactly --threads slots); the skeleton, the
 // report, the segmentation and the preview must not change. About 75 s on 2 cores;
 // without the shared data folder only the bench clouds run (the ctest entry then reads
-// as skipped).
+// as skipped). A cloud denser than its voxels (150,000 noisy points at V = 30) takes the
+// sampled outlier test and the density cap.
 TEST_CASE("tool: the same skeleton and report, byte for byte, for 1, 2, 3, 4 and 8 threads",
           "[tool][threads][shared_data]")
 {
   const Scratch scratch;
   std::vector<std::string> inputs;
+  const std::string dense = scratch.path("stick_figure-noise-dense.xyz");
+  DF_L1_test::write_xyz(dense, DF_L1_test::make_sample(DF_L1_test::shape_by_name("stick_figure"),
+                                                       DF_L1_test::Variant::noise, 150000, 7).points);
+  inputs.push_back(dense);
   for(const char* headline : {"stick_figure:clean", "torus:clean", "branching_tree:clean", "many_armed:clean",
                               "stick_figure:noise"})
   {
@@ -864,11 +869,14 @@ TEST_CASE("tool: the same skeleton and report, byte for byte, for 1, 2, 3, 4 and
     {
       INFO(threads << " threads");
       const Run r = run_tool(quoted(input) + " " + quoted(skeleton) + " --report " + quoted(report) + " --segmentation " +
-                               quoted(segments) + " --preview " + quoted(preview) + " --threads " + std::to_string(threads),
+                               quoted(segments) + " --preview " + quoted(preview) + " --threads " + std::to_string(threads) +
+                               (input == dense ? " --voxel-resolution 30" : ""),
                              scratch);
       INFO(r.err);
       REQUIRE(r.status == 0);
       CHECK(read_report(report).get<int>("parameters.threads") == threads);
+      if(input == dense)
+        CHECK(read_report(report).get<double>("counts.analysed_points") < 50000);
       const std::vector<std::string> outputs{read_text(skeleton), deterministic_report(report), read_text(segments),
                                              read_text(preview)};
       if(threads == 1)
