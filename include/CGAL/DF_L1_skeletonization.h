@@ -25,6 +25,7 @@
 #include <CGAL/DF_L1_skeleton/internal/density_cap.h>
 #include <CGAL/DF_L1_skeleton/internal/memory_estimate.h>
 #include <CGAL/DF_L1_skeleton/internal/normalization.h>
+#include <CGAL/DF_L1_skeleton/internal/parallel_for.h>
 #include <CGAL/DF_L1_skeleton/internal/point_gap_cuts.h>
 #include <CGAL/DF_L1_skeleton/internal/point_range.h>
 #include <CGAL/DF_L1_skeleton/internal/sampling_spacing.h>
@@ -47,6 +48,7 @@
 #include <cmath>
 #include <iterator>
 #include <memory>
+#include <type_traits>
 #include <string>
 #include <vector>
 
@@ -149,19 +151,23 @@ public:
   /// @{
 
   /// Flags the scattered outliers (`flag_sparse_outliers()`). In a cloud denser than its
-  /// voxels can show (more points than twice the occupied cells of a third of the finest
-  /// voxel), the test runs on a uniform sample of about two points per occupied cell, and
-  /// a point outside the sample is an outlier when no unflagged point of the sample lies
-  /// within a cell around it (\ref design_density_cap).
+  /// voxels can show (at least twice as many points as it occupies cells of a third of
+  /// the finest voxel, in a lattice of at most 4 cells per point), the test runs on a
+  /// uniform sample of about two points per occupied cell, and a point outside the sample
+  /// is an outlier unless an unflagged point of the sample lies within twice that point's
+  /// distance to its 6th neighbour in the sample (\ref design_density_cap).
   void flag_outliers()
   {
     if(!sparse_outliers_.empty())
       return;
-    const DF_L1::internal::Density_cap cells(points_.size(), point_coordinates(), [](std::size_t) { return true; },
-                                             density_cell_size(), 1, 4, 0.5);
-    if(cells.active())
-      sparse_outliers_ = DF_L1::internal::sampled_sparse_outliers<ConcurrencyTag>(
-        points_, density_cell_size(), (std::max)(std::size_t(1), points_.size() / (2 * cells.representatives().size())));
+    const DF_L1::internal::Cell_lattice lattice = density_lattice();
+    if(lattice.size() > 0)
+    {
+      const std::size_t occupied = DF_L1::internal::occupied_cells(lattice, points_.size(), point_coordinates());
+      if(double(occupied) <= dense_share * double(points_.size()))
+        sparse_outliers_ = DF_L1::internal::sampled_sparse_outliers<ConcurrencyTag>(
+          points_, lattice, (std::max)(std::size_t(1), points_.size() / (2 * occupied)));
+    }
     if(sparse_outliers_.empty())
       sparse_outliers_ = DF_L1::flag_sparse_outliers<ConcurrencyTag>(points_);
     sparse_outlier_count_ = 0;
@@ -184,17 +190,17 @@ public:
     if(denoise_checked_)
       return;
     flag_outliers();
-    // A cloud denser than its voxels can show (more points than cells of a third of the
-    // finest voxel, the paper's 3 x 3 x 3 subdivision) is analysed through
+    // A cloud denser than its voxels can show (see flag_outliers()) is analysed through
     // representatives: the first non-outlier point of each such cell in input order. Every
     // occupied cell keeps one, so the voxels are marked much as with all the points; a
-    // point left out shares its cell with its representative and takes its voxel's
-    // outlier flag and its displacement by the smoothing. The stages from here to the
+    // point left out shares its cell with its representative and takes its voxel
+    // outlier flag, its smoothed position and its skeleton vertex. The stages from here to the
     // contraction then cost as much at 10 million points as at the few hundred thousand
     // that the voxels can tell apart (`number_of_analysed_points()`).
-    density_cap_ = DF_L1::internal::Density_cap(
-      points_.size(), point_coordinates(), [this](std::size_t i) { return !sparse_outliers_[i]; }, density_cell_size(),
-      1, 4, 0.5);
+    const DF_L1::internal::Cell_lattice lattice = density_lattice();
+    if(lattice.size() > 0)
+      density_cap_ = DF_L1::internal::Density_cap(lattice, points_.size(), point_coordinates(),
+                                                  [this](std::size_t i) { return !sparse_outliers_[i]; }, dense_share);
     kept_points_.clear();
     for(std::size_t i = 0; i < points_.size(); ++i)
       if(!sparse_outliers_[i] && density_cap_.is_representative(i))
@@ -300,7 +306,8 @@ public:
   /// Extracts the initial skeleton (`extract_initial_skeleton()`), cuts its cycles where
   /// they cross a gap between two parts that the points show and the voxels did not
   /// (parts 1 or 2 voxels apart), and assigns every non-outlier input point to its
-  /// nearest vertex of the graph.
+  /// nearest vertex of the graph (a point left out by the density cap, to that of its
+  /// representative: `flag_outliers()`).
   ///
   /// The memory estimate is refined from the distance field (`estimated_peak_memory()`)
   /// and checked against `max_memory` before the thinning, and again before the graph
@@ -360,7 +367,8 @@ public:
   }
 
   /// Builds the final skeleton from the contracted samples (`build_skeleton_graph()`),
-  /// assigns every non-outlier input point to its nearest vertex, and attaches by one edge
+  /// assigns every non-outlier input point to its nearest vertex (a point left out by the
+  /// density cap, to that of its representative), and attaches by one edge
   /// each piece whose points span at most a third of another piece's extent and come
   /// nearer to it than their own extent (a fragment whose connection the scan missed).
   void convert_to_skeleton()
@@ -400,12 +408,12 @@ public:
   /// number of input points flagged by `flag_sparse_outliers()` alone
   std::size_t number_of_sparse_outliers() { flag_outliers(); return sparse_outlier_count_; }
   /// the number of input points that the stages from the smoothing to the contraction
-  /// analyse: the non-outliers, or their representatives in a cloud denser than its
-  /// voxels can show (`denoise()`)
+  /// analyse: those not flagged as scattered outliers, or their representatives in a
+  /// cloud denser than its voxels can show (`denoise()`)
   std::size_t number_of_analysed_points()
   {
     denoise();
-    return density_cap_.active() ? density_cap_.representatives().size() : points_.size() - sparse_outlier_count_;
+    return kept_points_.size();
   }
   /// the estimated noise of the surface, input units (`estimate_surface_noise()`)
   double surface_noise() { denoise(); return normalization_.to_input(surface_noise_); }
@@ -477,7 +485,8 @@ public:
   void set_upsampling(bool on) { set([&](DF_L1::Parameters& p) { p.upsampling = on; }); } ///< \sa `upsampling()`
   int upsampling_neighbors() const { return parameters_.upsampling_neighbors; } ///< k of the density test
   void set_upsampling_neighbors(int k) { set([&](DF_L1::Parameters& p) { p.upsampling_neighbors = k; }); } ///< \sa `upsampling_neighbors()`
-  /// r of the density test (input units; default 3 d_bb / cbrt(N), N the input points)
+  /// r of the density test (input units; default 3 d_bb / cbrt(N), N the input points, or
+  /// the analysed points of a cloud denser than its voxels once `denoise()` has run)
   double upsampling_radius() const { return normalization_.to_input(internal_upsampling_radius()); }
   void set_upsampling_radius(double r) { set([&](DF_L1::Parameters& p) { p.upsampling_radius = r; }); } ///< \sa `upsampling_radius()`
   int voxel_resolution() const { return parameters_.voxel_resolution; } ///< V
@@ -679,7 +688,8 @@ private:
   double internal_upsampling_radius() const
   {
     return parameters_.upsampling_radius ? normalization_.to_internal(*parameters_.upsampling_radius)
-                                         : DF_L1::internal::default_upsampling_radius(diagonal_, points_.size());
+                                         : DF_L1::internal::default_upsampling_radius(
+                                             diagonal_, density_cap_.active() ? kept_points_.size() : points_.size());
   }
   // the constructor's estimate, from the parameters and the number of points
   DF_L1::internal::Memory_estimate initial_memory_estimate() const
@@ -742,7 +752,8 @@ private:
   }
 
   // the input points, each non-outlier at its smoothed position (input order); a point
-  // left out by the density cap moved as its owner
+  // left out by the density cap at its owner's (within a cell diagonal: its own offset
+  // would carry its noise, which the owner's smoothing did not see)
   std::vector<Point> smoothed_input_points() const
   {
     std::vector<Point> result = points_;
@@ -756,8 +767,7 @@ private:
       {
         if(sparse_outliers_[i] || density_cap_.is_representative(i))
           continue;
-        const std::size_t owner = owner_of(i);
-        result[i] = points_[i] + (result[owner] - points_[owner]);
+        result[i] = result[owner_of(i)];
       }
     }
     return result;
@@ -793,12 +803,9 @@ private:
       g[v].points.clear();
     }
     // the vertex of each point (in parallel), then the lists in point order
-    const auto xyz = point_coordinates();
     const std::vector<std::size_t> vertex = for_each_left_out<std::size_t>(none, [&](std::size_t i) {
-      return outliers_[i] ? none : vertex_of[density_cap_.owner(xyz(i))];
+      return outliers_[i] ? none : vertex_of[density_cap_.owner(DF_L1::internal::point_xyz(points_[i]))];
     });
-    for(std::size_t r = 0; r < representatives.size(); ++r)
-      vertex_of[r] = outliers_[representatives[r]] ? none : vertex_of[r];
     std::vector<std::size_t> count(boost::num_vertices(g), 0);
     for(std::size_t i = 0, r = 0; i < points_.size(); ++i)
     {
@@ -821,6 +828,7 @@ private:
   template <class T, class F>
   std::vector<T> for_each_left_out(T other, const F& f) const
   {
+    static_assert(!std::is_same<T, bool>::value, "the values are written in parallel: not std::vector<bool>");
     std::vector<T> result(points_.size(), other);
     DF_L1::internal::for_each_range<ConcurrencyTag>(points_.size(), [&](std::size_t begin, std::size_t end) {
       for(std::size_t i = begin; i < end; ++i)
@@ -830,25 +838,30 @@ private:
     return result;
   }
 
-  // the cells of the density cap: a third of the finest voxel (the paper's 3 x 3 x 3
-  // subdivision)
-  double density_cell_size() const { return longest_side_ / (3.0 * parameters_.voxel_resolution); }
-  // the coordinates of the input point i, for the density cap
+  // A cloud is dense when it holds at least 1 / dense_share points per occupied cell of
+  // a third of the finest voxel (the paper's 3 x 3 x 3 subdivision), in a lattice of at
+  // most max_cells_per_point cells per point (beyond, the cloud is sparser than its
+  // cells anyway, and their array would cost more than the points).
+  static constexpr double dense_share = 0.5;
+  static constexpr double max_cells_per_point = 4;
+  // the cells of the density cap; empty (size() 0) when there would be too many
+  DF_L1::internal::Cell_lattice density_lattice() const
+  {
+    const DF_L1::internal::Cell_lattice lattice(points_.size(), point_coordinates(),
+                                                longest_side_ / (3.0 * parameters_.voxel_resolution));
+    return lattice.cells() <= max_cells_per_point * double(points_.size()) ? lattice : DF_L1::internal::Cell_lattice();
+  }
+  // the coordinates of the input point i
   auto point_coordinates() const
   {
-    return [this](std::size_t i) {
-      return std::array<double, 3>{{CGAL::to_double(points_[i].x()), CGAL::to_double(points_[i].y()),
-                                    CGAL::to_double(points_[i].z())}};
-    };
+    return [this](std::size_t i) { return DF_L1::internal::point_xyz(points_[i]); };
   }
 
   // the input index of the representative that stands for the input point i, left out
   // by the density cap
   std::size_t owner_of(std::size_t i) const
   {
-    const Point& p = points_[i];
-    return density_cap_.representatives()[density_cap_.owner(
-      {{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())}})];
+    return density_cap_.representatives()[density_cap_.owner(DF_L1::internal::point_xyz(points_[i]))];
   }
 
   // the points the grid and the contraction are built from
@@ -874,7 +887,7 @@ private:
   std::size_t sparse_outlier_count_ = 0, outlier_count_ = 0;
   bool denoise_checked_ = false, denoised_ = false;
   double surface_noise_ = 0, residual_growth_ = 0;
-  std::vector<Point> kept_points_; // the points that are not scattered outliers, smoothed when denoised
+  std::vector<Point> kept_points_; // the analysed points (not scattered outliers), smoothed when denoised
   bool upsampled_ = false;
   std::vector<Point> added_points_;
   std::unique_ptr<Voxel_grid> raw_grid_, grid_;

@@ -435,8 +435,9 @@ class Skeletonization:
     @property
     def number_of_analysed_points(self) -> int:
         """The number of points the stages from the smoothing to the contraction analyse:
-        the non-outliers, or one per cell of a third of a voxel in a cloud denser than its
-        voxels (the density cap; every point is still flagged and assigned)."""
+        those not flagged as scattered outliers, or one of them per cell of a third of a
+        voxel in a cloud denser than its voxels (every point is still flagged and
+        assigned, a point left out as the representative of its cell)."""
         return self._impl.number_of_analysed_points
 
     def outlier_flags(self) -> np.ndarray:

@@ -333,6 +333,28 @@ TEST_CASE("skeletonization class: a cloud denser than its voxels is analysed thr
     wrong += owners[i] != (dense.outlier_flags()[i] ? 0 : 1);
   CHECK(wrong == 0);
 
+  // A dense cloud whose density varies 16:1 (the two large faces of a flat box, sampled
+  // with a density 1 / (1 + 3x)^2 along x): the points outside the outlier test's sample
+  // are judged at the spacing of the sample around them, so the sparse end keeps its
+  // points (the test of every point flags 158 of the 8,000 in the last tenth).
+  std::mt19937 random(11);
+  std::uniform_real_distribution<double> unit(0, 1);
+  std::vector<Point_3> box;
+  while(box.size() < 150000)
+  {
+    const double v = unit(random), x = v / (4 - 3 * v); // the inverse of F(x) = 4x / (1 + 3x)
+    const double y = unit(random);
+    box.emplace_back(x, y, unit(random) < 0.5 ? 0.0 : 0.3);
+  }
+  Skeletonization uneven(box, CGAL::parameters::voxel_resolution(30));
+  CHECK(uneven.number_of_analysed_points() < box.size() / 4);
+  std::size_t sparse_end = 0, sparse_end_flagged = 0;
+  for(std::size_t i = 0; i < box.size(); ++i)
+    if(box[i].x() > 0.8)
+      ++sparse_end, sparse_end_flagged += uneven.outlier_flags()[i];
+  CHECK(sparse_end > 3000);
+  CHECK(double(sparse_end_flagged) < 0.01 * double(sparse_end));
+
   // A cloud no denser than its voxels is analysed whole.
   Skeletonization sparse(DF_L1_test::make_sample(torus, DF_L1_test::Variant::clean, 8000, 4).points);
   CHECK(sparse.number_of_analysed_points() == 8000);

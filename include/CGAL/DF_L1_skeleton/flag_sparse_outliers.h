@@ -7,6 +7,7 @@
 /// Stage 0a: outlier points far from every other sample, flagged before voxelization.
 
 #include <CGAL/DF_L1_skeleton/errors.h>
+#include <CGAL/DF_L1_skeleton/internal/density_cap.h>
 #include <CGAL/DF_L1_skeleton/internal/parallel_for.h>
 #include <CGAL/DF_L1_skeleton/internal/point_range.h>
 #include <CGAL/DF_L1_skeleton/internal/uniform_grid.h>
@@ -35,10 +36,12 @@ namespace internal {
 // per-point array is indexed by position in grid.sorted_points(), so that the tests of
 // neighbouring points read nearby memory (on a cloud given in random order, indexing by
 // input index made every neighbour a cache miss). `Index` holds a position: 32 bits
-// halve the neighbour lists of clouds below 4 billion points. Returns a flag per position.
+// halve the neighbour lists of clouds below 4 billion points. Returns a flag per position;
+// `distances`, when given, receives the distance of each position to its k-th nearest
+// unflagged point as the last pass measured it.
 template <class Index, class ConcurrencyTag>
 std::vector<char> flag_sparse_outliers_in_cell_order(const Uniform_grid& grid, unsigned int k, double ratio,
-                                                     double local_ratio)
+                                                     double local_ratio, std::vector<double>* distances = nullptr)
 {
   const std::vector<std::array<double, 3>>& xyz = grid.sorted_points();
   const std::size_t n = xyz.size();
@@ -122,6 +125,8 @@ std::vector<char> flag_sparse_outliers_in_cell_order(const Uniform_grid& grid, u
         measure(candidates[c], false, nearest);
     });
   }
+  if(distances)
+    distances->swap(kth);
   return flagged;
 }
 
@@ -210,93 +215,68 @@ inline bool in_sample(std::size_t i, std::size_t every)
   return z % every == 0;
 }
 
-// The flags of flag_sparse_outliers() for a cloud far denser than its voxels, where a
-// test of every point would cost a neighbour search per point: the test runs on a
-// uniform sample of one point in `every`, which thins the surface and the scattered
-// points alike and so keeps them apart (one point per cell would not: it would bring the
-// surface down to the density of the outliers). A point outside the sample is an outlier
-// when no unflagged point of the sample lies in its cell of size `cell` or the 26 around
-// it: a scattered point is alone there, a point of the surface has the sample's points
-// of the surface around it. Returns an empty vector when the sample is too small or the
-// cells too many for this to hold (the caller then tests every point).
+// The flags of flag_sparse_outliers() (k = 6, ratio 4, local ratio 2) for a cloud far
+// denser than its voxels, where a test of every point would cost a neighbour search per
+// point: the test runs on a uniform sample of one point in `every`, which thins the
+// surface and the scattered points alike and so keeps them apart (one point per cell
+// would not: it would bring the surface down to the density of the outliers). A point
+// outside the sample is an outlier unless an unflagged point s of the sample lies within
+// twice the distance from s to its 6th nearest neighbour in the sample (the local ratio
+// of the test): in a sparse region of the surface that distance is larger, and the
+// points there are judged at their own spacing. The balls are rounded up to the cells of
+// `lattice` they touch. Returns an empty vector when the sample is too small for this to
+// hold (the caller then tests every point).
 template <class ConcurrencyTag, class Point>
-std::vector<bool> sampled_sparse_outliers(const std::vector<Point>& points, double cell, std::size_t every)
+std::vector<bool> sampled_sparse_outliers(const std::vector<Point>& points, const Cell_lattice& lattice,
+                                          std::size_t every)
 {
+  const unsigned int k = 6;
+  const double ratio = 4, local_ratio = 2;
   const std::size_t n = points.size();
-  const auto xyz = [&](std::size_t i) {
-    return std::array<double, 3>{{CGAL::to_double(points[i].x()), CGAL::to_double(points[i].y()),
-                                  CGAL::to_double(points[i].z())}};
-  };
   std::vector<std::size_t> sample;
   for(std::size_t i = 0; i < n; ++i)
     if(in_sample(i, every))
       sample.push_back(i);
-  if(n == 0 || !(cell > 0) || sample.size() < 1000)
+  if(sample.size() < 1000 || sample.size() > std::numeric_limits<std::uint32_t>::max())
     return {};
-  std::array<double, 3> lo = xyz(0), hi = lo;
-  for(std::size_t i = 0; i < n; ++i)
-  {
-    const std::array<double, 3> p = xyz(i);
-    for(int a = 0; a < 3; ++a)
-    {
-      lo[a] = (std::min)(lo[a], p[a]);
-      hi[a] = (std::max)(hi[a], p[a]);
-    }
-  }
-  std::array<std::size_t, 3> dims;
-  double cells = 1;
-  for(int a = 0; a < 3; ++a)
-  {
-    const double d = std::floor((hi[a] - lo[a]) / cell) + 1;
-    cells *= d;
-    dims[a] = std::size_t((std::min)(d, 1e9));
-  }
-  if(!(cells <= 8 * double(n)))
-    return {};
-  const auto cell_of = [&](const std::array<double, 3>& p) {
-    std::array<std::size_t, 3> c;
-    for(int a = 0; a < 3; ++a)
-    {
-      const double x = std::floor((p[a] - lo[a]) / cell);
-      c[a] = x <= 0 ? 0 : (std::min)(std::size_t(x), dims[a] - 1);
-    }
-    return c;
-  };
-
-  std::vector<Point> sampled;
-  sampled.reserve(sample.size());
-  for(std::size_t i : sample)
-    sampled.push_back(points[i]);
-  const std::vector<bool> sample_flags = flag_sparse_outliers<ConcurrencyTag>(sampled);
-  std::vector<Point>().swap(sampled);
-
-  // the cells that hold an unflagged point of the sample
-  std::vector<std::uint64_t> kept((dims[0] * dims[1] * dims[2] + 63) / 64, 0);
+  std::vector<std::array<double, 3>> xyz(sample.size());
   for(std::size_t s = 0; s < sample.size(); ++s)
-    if(!sample_flags[s])
-    {
-      const std::array<std::size_t, 3> c = cell_of(xyz(sample[s]));
-      const std::size_t index = (c[2] * dims[1] + c[1]) * dims[0] + c[0];
-      kept[index / 64] |= std::uint64_t(1) << (index % 64);
-    }
+    xyz[s] = point_xyz(points[sample[s]]);
+  const Uniform_grid grid(xyz, 0, ConcurrencyTag());
+  std::vector<std::array<double, 3>>().swap(xyz);
+  std::vector<double> kth; // in cell order
+  const std::vector<char> flagged =
+    flag_sparse_outliers_in_cell_order<std::uint32_t, ConcurrencyTag>(grid, k, ratio, local_ratio, &kth);
+
+  // the cells within reach of an unflagged point of the sample
+  std::vector<std::uint64_t> covered((lattice.size() + 63) / 64, 0);
+  const std::vector<std::array<double, 3>>& sorted = grid.sorted_points();
+  for(std::size_t s = 0; s < sorted.size(); ++s)
+  {
+    if(flagged[s])
+      continue;
+    const double reach = local_ratio * kth[s];
+    const std::array<std::size_t, 3> lo = lattice.cell_of({{sorted[s][0] - reach, sorted[s][1] - reach, sorted[s][2] - reach}}),
+                                     hi = lattice.cell_of({{sorted[s][0] + reach, sorted[s][1] + reach, sorted[s][2] + reach}});
+    for(std::size_t z = lo[2]; z <= hi[2]; ++z)
+      for(std::size_t y = lo[1]; y <= hi[1]; ++y)
+        for(std::size_t x = lo[0]; x <= hi[0]; ++x)
+        {
+          const std::size_t c = lattice.index({{x, y, z}});
+          covered[c / 64] |= std::uint64_t(1) << (c % 64);
+        }
+  }
   std::vector<char> flags(n, 0);
   for_each_range<ConcurrencyTag>(n, [&](std::size_t begin, std::size_t end) {
     for(std::size_t i = begin; i < end; ++i)
     {
-      const std::array<std::size_t, 3> c = cell_of(xyz(i));
-      bool near = false;
-      for(std::size_t z = c[2] ? c[2] - 1 : 0; z <= (std::min)(c[2] + 1, dims[2] - 1) && !near; ++z)
-        for(std::size_t y = c[1] ? c[1] - 1 : 0; y <= (std::min)(c[1] + 1, dims[1] - 1) && !near; ++y)
-          for(std::size_t x = c[0] ? c[0] - 1 : 0; x <= (std::min)(c[0] + 1, dims[0] - 1) && !near; ++x)
-          {
-            const std::size_t index = (z * dims[1] + y) * dims[0] + x;
-            near = (kept[index / 64] >> (index % 64)) & 1;
-          }
-      flags[i] = !near;
+      const std::size_t c = lattice.index(lattice.cell_of(point_xyz(points[i])));
+      flags[i] = !((covered[c / 64] >> (c % 64)) & 1);
     }
   }, 1 << 14);
-  for(std::size_t s = 0; s < sample.size(); ++s)
-    flags[sample[s]] = sample_flags[s];
+  const std::vector<std::size_t>& order = grid.indices_by_cell();
+  for(std::size_t s = 0; s < sorted.size(); ++s)
+    flags[sample[order[s]]] = flagged[s];
   return std::vector<bool>(flags.begin(), flags.end());
 }
 

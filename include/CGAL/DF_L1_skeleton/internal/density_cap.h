@@ -5,7 +5,10 @@
 
 /// \file density_cap.h
 /// The points that the stages analyse when a cloud is far denser than its voxels can
-/// show: a few per cell of a fraction of the finest voxel. Not part of the public API.
+/// show: one per cell of a fraction of the finest voxel. Not part of the public API.
+
+#include <CGAL/assertions.h>
+#include <CGAL/number_utils.h>
 
 #include <algorithm>
 #include <array>
@@ -19,27 +22,25 @@ namespace CGAL {
 namespace DF_L1 {
 namespace internal {
 
-// The representatives of a cloud: in every cubic cell, the first `capacity` eligible
-// points in input order. An eligible point left out shares its cell with `capacity`
-// representatives, the first of which (its owner) stands for it: it lies within a cell
-// diagonal of it. Linear in the points: one pass in input order.
-class Density_cap
+// the coordinates of a point as doubles
+template <class Point>
+std::array<double, 3> point_xyz(const Point& p)
+{
+  return {{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())}};
+}
+
+// Cubic cells of one size over the bounding box of a set of points; a position outside
+// the box falls in the nearest cell.
+class Cell_lattice
 {
 public:
-  Density_cap() = default;
+  Cell_lattice() = default;
 
-  // Cells of size `cell` over the `n` points `xyz(i)` (an array of 3 doubles); only the
-  // points with `eligible(i)` count, the others are neither representatives nor owned.
-  // No cap (every eligible point a representative) when the cells would outnumber
-  // `max_cells_per_point` times the points (the cloud is then sparser than a point per
-  // cell on average, and a cell array that large would cost more than the points), nor
-  // when more than `max_kept_share` of the points would be representatives.
-  template <class Xyz, class Eligible>
-  Density_cap(std::size_t n, const Xyz& xyz, const Eligible& eligible, double cell, std::size_t capacity,
-              double max_cells_per_point, double max_kept_share)
-    : cell_(cell)
+  // the lattice of cells of size `cell` over the `n` points `xyz(i)` (arrays of 3 doubles)
+  template <class Xyz>
+  Cell_lattice(std::size_t n, const Xyz& xyz, double cell) : cell_(cell)
   {
-    if(n == 0 || !(cell > 0) || capacity == 0 || capacity > 255 || n > std::numeric_limits<std::uint32_t>::max())
+    if(n == 0 || !(cell > 0))
       return;
     std::array<double, 3> hi = xyz(0);
     lo_ = hi;
@@ -52,33 +53,90 @@ public:
         hi[a] = (std::max)(hi[a], p[a]);
       }
     }
-    double cells = 1;
+    cells_ = 1;
     for(int a = 0; a < 3; ++a)
     {
       const double d = std::floor((hi[a] - lo_[a]) / cell_) + 1;
-      dims_[a] = d < 1e9 ? std::size_t(d) : std::size_t(1e9);
-      cells *= d;
+      dims_[a] = std::size_t((std::min)(d, 1e9));
+      cells_ *= d;
     }
-    if(!(cells <= max_cells_per_point * double(n)))
+  }
+
+  // the number of cells (a double: it may exceed what an array can hold)
+  double cells() const { return cells_; }
+  // the number of cells, once cells() is known to fit in memory (0 for an empty lattice)
+  std::size_t size() const { return dims_[0] * dims_[1] * dims_[2]; }
+  std::array<std::size_t, 3> cell_of(const std::array<double, 3>& p) const
+  {
+    std::array<std::size_t, 3> c;
+    for(int a = 0; a < 3; ++a)
+    {
+      const double x = std::floor((p[a] - lo_[a]) / cell_);
+      c[a] = x <= 0 ? 0 : (std::min)(std::size_t((std::min)(x, 1e18)), dims_[a] - 1);
+    }
+    return c;
+  }
+  std::size_t index(const std::array<std::size_t, 3>& c) const { return (c[2] * dims_[1] + c[1]) * dims_[0] + c[0]; }
+  std::size_t index_of(const std::array<double, 3>& p) const { return index(cell_of(p)); }
+
+private:
+  double cell_ = 1, cells_ = 0;
+  std::array<double, 3> lo_ = {{0, 0, 0}};
+  std::array<std::size_t, 3> dims_ = {{0, 0, 0}}; // none: size() 0
+};
+
+// The number of cells of `lattice` (which must fit in memory) that hold one of the `n`
+// points `xyz(i)`.
+template <class Xyz>
+std::size_t occupied_cells(const Cell_lattice& lattice, std::size_t n, const Xyz& xyz)
+{
+  std::vector<std::uint64_t> occupied((lattice.size() + 63) / 64, 0);
+  std::size_t count = 0;
+  for(std::size_t i = 0; i < n; ++i)
+  {
+    const std::size_t c = lattice.index_of(xyz(i));
+    const std::uint64_t bit = std::uint64_t(1) << (c % 64);
+    count += (occupied[c / 64] & bit) == 0;
+    occupied[c / 64] |= bit;
+  }
+  return count;
+}
+
+// The representatives of a cloud: in every cell of a lattice, the first eligible point in
+// input order. An eligible point left out shares its cell with its representative (its
+// owner), which stands for it: it lies within a cell diagonal of it. Linear in the
+// points: one pass in input order.
+class Density_cap
+{
+public:
+  Density_cap() = default;
+
+  // Over the `n` points `xyz(i)`, of which those with `eligible(i)` count (the others
+  // are neither representatives nor owned). In force only when at most `max_kept_share`
+  // of the eligible points are representatives; the lattice must fit in memory.
+  template <class Xyz, class Eligible>
+  Density_cap(const Cell_lattice& lattice, std::size_t n, const Xyz& xyz, const Eligible& eligible,
+              double max_kept_share)
+    : lattice_(lattice)
+  {
+    if(n == 0 || n > std::numeric_limits<std::uint32_t>::max())
       return;
-    const std::uint32_t none = std::numeric_limits<std::uint32_t>::max();
-    std::vector<std::uint8_t> count(dims_[0] * dims_[1] * dims_[2], 0);
-    first_.assign(count.size(), none);
+    first_.assign(lattice_.size(), none);
     representative_.assign(n, 0);
-    representatives_.reserve(n / 4);
+    std::size_t eligible_points = 0;
     for(std::size_t i = 0; i < n; ++i)
     {
       if(!eligible(i))
         continue;
-      const std::size_t c = cell_of(xyz(i));
-      if(count[c] >= capacity)
+      ++eligible_points;
+      std::uint32_t& first = first_[lattice_.index_of(xyz(i))];
+      if(first != none)
         continue;
-      if(count[c]++ == 0)
-        first_[c] = std::uint32_t(representatives_.size());
+      first = std::uint32_t(representatives_.size());
       representative_[i] = 1;
       representatives_.push_back(i);
     }
-    if(double(representatives_.size()) > max_kept_share * double(n)) // not worth it: the plain cloud
+    if(double(representatives_.size()) > max_kept_share * double(eligible_points)) // the plain cloud
     {
       std::vector<std::size_t>().swap(representatives_);
       std::vector<char>().swap(representative_);
@@ -86,30 +144,24 @@ public:
     }
   }
 
-  // whether some eligible points are left out
+  // whether the cap is in force (some eligible points are left out)
   bool active() const { return !representatives_.empty(); }
+  const Cell_lattice& lattice() const { return lattice_; }
   // the input indices of the representatives, ascending (empty when not active())
   const std::vector<std::size_t>& representatives() const { return representatives_; }
   // whether the point of input index i is analysed (every point when not active())
   bool is_representative(std::size_t i) const { return !active() || representative_[i]; }
   // the position in representatives() of the owner of an eligible point left out, at `p`
-  std::size_t owner(const std::array<double, 3>& p) const { return first_[cell_of(p)]; }
-
-private:
-  std::size_t cell_of(const std::array<double, 3>& p) const
+  std::size_t owner(const std::array<double, 3>& p) const
   {
-    std::size_t c[3];
-    for(int a = 0; a < 3; ++a)
-    {
-      const double x = std::floor((p[a] - lo_[a]) / cell_);
-      c[a] = x <= 0 ? 0 : (std::min)(std::size_t(x), dims_[a] - 1);
-    }
-    return (c[2] * dims_[1] + c[1]) * dims_[0] + c[0];
+    const std::uint32_t first = first_[lattice_.index_of(p)];
+    CGAL_assertion(first != none);
+    return first;
   }
 
-  double cell_ = 0;
-  std::array<double, 3> lo_ = {{0, 0, 0}};
-  std::array<std::size_t, 3> dims_ = {{1, 1, 1}};
+private:
+  static constexpr std::uint32_t none = std::numeric_limits<std::uint32_t>::max();
+  Cell_lattice lattice_;
   std::vector<std::size_t> representatives_;
   std::vector<char> representative_;
   std::vector<std::uint32_t> first_;

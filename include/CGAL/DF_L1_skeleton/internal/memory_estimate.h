@@ -129,6 +129,7 @@ constexpr double memory_occupied_repair_bytes_per_voxel = 11 + 32;
 // Per point, while the voxels exist: the caller's points and normals (24 + 24, the
 // tool's cloud) and the class's points and kept points (24 + 24); 24 per added point.
 constexpr double memory_held_bytes_per_point = 96;
+constexpr double memory_kept_bytes_per_point = 24; // of those 96: the kept (analysed) points
 // Per input point of a cloud analysed through representatives (whose point stages
 // hold only a sample or the representatives): the caller's and the class's points
 // (24 + 24), the pages of the file being read (the tool), the flags and the density
@@ -137,8 +138,10 @@ constexpr double memory_dense_cloud_bytes_per_point = 110;
 constexpr double memory_held_bytes_per_added_point = 24;
 
 // The largest of the phases of the run, for the grid as built: the point stages (the
-// outlier test, the smoothing, the contraction: the per-point bytes of the initial
-// model, with the voxels held during the contraction) and the phases of the initial
+// outlier test, the smoothing, the contraction: the per-point bytes of the initial model,
+// or for a cloud analysed through representatives the larger of the dense-cloud bytes per
+// input point and the initial model's per analysed point; with the voxels held during
+// the contraction) and the phases of the initial
 // skeleton (the points and voxels held, and the phase's own arrays).
 inline Memory_estimate refined_memory_estimate(const Voxel_stage_counts& c)
 {
@@ -153,7 +156,8 @@ inline Memory_estimate refined_memory_estimate(const Voxel_stage_counts& c)
                                    repair * c.voxels});
   const double analysed = c.analysed_points < 0 ? c.points : c.analysed_points;
   // the kept points are the analysed ones
-  const double held_points = (memory_held_bytes_per_point - 24) * c.points + 24 * analysed +
+  const double held_points = (memory_held_bytes_per_point - memory_kept_bytes_per_point) * c.points +
+                             memory_kept_bytes_per_point * analysed +
                              memory_held_bytes_per_added_point * c.added_points;
   Memory_estimate e;
   e.points = c.points;
