@@ -31,6 +31,7 @@
 #include <CGAL/DF_L1_skeleton/internal/sampling_spacing.h>
 #include <CGAL/DF_L1_skeleton/internal/spur_pruning.h>
 #include <CGAL/DF_L1_skeleton/internal/uniform_grid.h>
+#include <CGAL/DF_L1_skeleton/internal/vec3.h>
 #include <CGAL/DF_L1_skeleton/named_parameters.h>
 #include <CGAL/DF_L1_skeleton/remove_outlier_voxels.h>
 #include <CGAL/DF_L1_skeleton/skeleton_statistics.h>
@@ -136,6 +137,7 @@ public:
     const CGAL::Bbox_3 box = DF_L1::internal::checked_bbox(points_, CGAL::Identity_property_map<Point>(), stage_name);
     diagonal_ = DF_L1::internal::diagonal(box);
     longest_side_ = DF_L1::internal::longest_side(box);
+    box_min_ = {{box.xmin(), box.ymin(), box.zmin()}};
     extent_ = {{box.xmax() - box.xmin(), box.ymax() - box.ymin(), box.zmax() - box.zmin()}};
     thickness_ = rms_distance_to_best_plane(points_);
     parameters_ = DF_L1::internal::resolve_parameters(np, stage_name);
@@ -261,31 +263,26 @@ public:
     voxelize();
     grid_ = std::make_unique<Voxel_grid>(DF_L1::remove_outlier_voxels(
       *raw_grid_, parameters::outlier_component_size(resolved_outlier_component_size()), &outlier_voxel_statistics_));
-    if(denoised_)
-    {
-      // The voxels of a smoothed cloud hold the smoothed positions; the noisy ones lie
-      // about the noise off that shell (judged there, half of a noisy scan's points fell
-      // in empty voxels). A point that the smoothing moved by more than 4 times the
-      // estimated noise (the fits' residual, which underestimates the noise by about a
-      // fifth: some 3 sigma) was no noise of the surface but an outlier drawn onto it.
-      const std::vector<Point> smoothed = smoothed_input_points();
-      outliers_ = DF_L1::flag_outlier_points(smoothed, *grid_);
-      const double reach = 4 * surface_noise_;
-      for(std::size_t i = 0; i < points_.size(); ++i)
-        outliers_[i] = outliers_[i] || CGAL::to_double(CGAL::squared_distance(points_[i], smoothed[i])) > reach * reach;
-    }
-    else
-      outliers_ = DF_L1::flag_outlier_points(points_, *grid_);
-    // A point left out by the density cap goes with its owner: its own voxel may have
-    // been marked by no representative.
+    // A point left out by the density cap goes with its representative: its own voxel may
+    // have been marked by no representative.
     if(density_cap_.active())
     {
-      const std::vector<char> owner_flag =
-        for_each_left_out<char>(2, [&](std::size_t i) { return char(outliers_[owner_of(i)]); });
-      for(std::size_t i = 0; i < points_.size(); ++i)
-        if(owner_flag[i] != 2)
-          outliers_[i] = owner_flag[i] != 0;
+      const std::vector<Point> analysed = analysed_input_points();
+      const std::vector<bool> flags = voxel_outlier_flags(analysed, denoised_ ? &kept_points_ : nullptr);
+      const std::vector<char> owner_flag = for_each_left_out<char>(0, [&](std::size_t i) {
+        return char(flags[density_cap_.owner(DF_L1::internal::to_vec3(points_[i]))]);
+      });
+      outliers_.assign(points_.size(), false);
+      for(std::size_t i = 0, r = 0; i < points_.size(); ++i)
+        outliers_[i] = density_cap_.is_representative(i) ? flags[r++] : owner_flag[i] != 0;
     }
+    else if(denoised_)
+    {
+      const std::vector<Point> smoothed = smoothed_input_points();
+      outliers_ = voxel_outlier_flags(points_, &smoothed);
+    }
+    else
+      outliers_ = voxel_outlier_flags(points_, nullptr);
     outlier_count_ = 0;
     for(std::size_t i = 0; i < points_.size(); ++i)
     {
@@ -773,6 +770,34 @@ private:
     return result;
   }
 
+  // The flags of the voxel test (`flag_outlier_points()`) of the input points `raw`.
+  // The voxels of a smoothed cloud hold the smoothed positions, `smoothed` (one per raw
+  // point); the noisy ones lie about the noise off that shell (judged there, half of a
+  // noisy scan's points fell in empty voxels). A point that the smoothing moved by more
+  // than 4 times the estimated noise (the fits' residual, which underestimates the noise
+  // by about a fifth: some 3 sigma) was no noise of the surface but an outlier drawn
+  // onto it.
+  std::vector<bool> voxel_outlier_flags(const std::vector<Point>& raw, const std::vector<Point>* smoothed) const
+  {
+    if(!smoothed)
+      return DF_L1::flag_outlier_points(raw, *grid_);
+    std::vector<bool> flags = DF_L1::flag_outlier_points(*smoothed, *grid_);
+    const double reach = 4 * surface_noise_;
+    for(std::size_t i = 0; i < raw.size(); ++i)
+      flags[i] = flags[i] || CGAL::to_double(CGAL::squared_distance(raw[i], (*smoothed)[i])) > reach * reach;
+    return flags;
+  }
+
+  // the input points of the representatives of the density cap, in their order
+  std::vector<Point> analysed_input_points() const
+  {
+    std::vector<Point> analysed;
+    analysed.reserve(density_cap_.representatives().size());
+    for(std::size_t i : density_cap_.representatives())
+      analysed.push_back(points_[i]);
+    return analysed;
+  }
+
   // Assigns every non-outlier input point to its nearest vertex of `g`
   // (`assign_points_to_skeleton()`); through the density cap, the representatives, and
   // each point left out to the vertex of its representative.
@@ -784,16 +809,11 @@ private:
       return;
     }
     const std::vector<std::size_t>& representatives = density_cap_.representatives();
-    std::vector<Point> analysed;
     std::vector<bool> analysed_outliers;
-    analysed.reserve(representatives.size());
     analysed_outliers.reserve(representatives.size());
     for(std::size_t i : representatives)
-    {
-      analysed.push_back(points_[i]);
       analysed_outliers.push_back(outliers_[i]);
-    }
-    DF_L1::assign_points_to_skeleton<ConcurrencyTag>(analysed, analysed_outliers, g);
+    DF_L1::assign_points_to_skeleton<ConcurrencyTag>(analysed_input_points(), analysed_outliers, g);
     const std::size_t none = std::size_t(-1);
     std::vector<std::size_t> vertex_of(representatives.size(), none);
     for(std::size_t v = 0; v < boost::num_vertices(g); ++v)
@@ -804,7 +824,7 @@ private:
     }
     // the vertex of each point (in parallel), then the lists in point order
     const std::vector<std::size_t> vertex = for_each_left_out<std::size_t>(none, [&](std::size_t i) {
-      return outliers_[i] ? none : vertex_of[density_cap_.owner(DF_L1::internal::point_xyz(points_[i]))];
+      return outliers_[i] ? none : vertex_of[density_cap_.owner(DF_L1::internal::to_vec3(points_[i]))];
     });
     std::vector<std::size_t> count(boost::num_vertices(g), 0);
     for(std::size_t i = 0, r = 0; i < points_.size(); ++i)
@@ -847,21 +867,20 @@ private:
   // the cells of the density cap; empty (size() 0) when there would be too many
   DF_L1::internal::Cell_lattice density_lattice() const
   {
-    const DF_L1::internal::Cell_lattice lattice(points_.size(), point_coordinates(),
-                                                longest_side_ / (3.0 * parameters_.voxel_resolution));
+    const DF_L1::internal::Cell_lattice lattice(box_min_, extent_, longest_side_ / (3.0 * parameters_.voxel_resolution));
     return lattice.cells() <= max_cells_per_point * double(points_.size()) ? lattice : DF_L1::internal::Cell_lattice();
   }
   // the coordinates of the input point i
   auto point_coordinates() const
   {
-    return [this](std::size_t i) { return DF_L1::internal::point_xyz(points_[i]); };
+    return [this](std::size_t i) { return DF_L1::internal::to_vec3(points_[i]); };
   }
 
   // the input index of the representative that stands for the input point i, left out
   // by the density cap
   std::size_t owner_of(std::size_t i) const
   {
-    return density_cap_.representatives()[density_cap_.owner(DF_L1::internal::point_xyz(points_[i]))];
+    return density_cap_.representatives()[density_cap_.owner(DF_L1::internal::to_vec3(points_[i]))];
   }
 
   // the points the grid and the contraction are built from
@@ -877,7 +896,7 @@ private:
   std::vector<Point> points_;
   double diagonal_ = 0, longest_side_ = 0; // of the points' bounding box
   double thickness_ = 0;                   // rms_distance_to_best_plane() of the points
-  std::array<double, 3> extent_ = {{0, 0, 0}}; // of the bounding box of the points
+  std::array<double, 3> box_min_ = {{0, 0, 0}}, extent_ = {{0, 0, 0}}; // of the bounding box of the points
   double max_memory_ = 0;
   std::unique_ptr<DF_L1::internal::Memory_estimate> refined_memory_; // from the distance field, once known
   DF_L1::Parameters parameters_;

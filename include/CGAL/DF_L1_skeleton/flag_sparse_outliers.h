@@ -11,9 +11,9 @@
 #include <CGAL/DF_L1_skeleton/internal/parallel_for.h>
 #include <CGAL/DF_L1_skeleton/internal/point_range.h>
 #include <CGAL/DF_L1_skeleton/internal/uniform_grid.h>
+#include <CGAL/DF_L1_skeleton/internal/vec3.h>
 
 #include <CGAL/Named_function_parameters.h>
-#include <CGAL/number_utils.h>
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/tags.h>
 
@@ -241,7 +241,7 @@ std::vector<bool> sampled_sparse_outliers(const std::vector<Point>& points, cons
     return {};
   std::vector<std::array<double, 3>> xyz(sample.size());
   for(std::size_t s = 0; s < sample.size(); ++s)
-    xyz[s] = point_xyz(points[sample[s]]);
+    xyz[s] = to_vec3(points[sample[s]]);
   const Uniform_grid grid(xyz, 0, ConcurrencyTag());
   std::vector<std::array<double, 3>>().swap(xyz);
   std::vector<double> kth; // in cell order
@@ -270,7 +270,7 @@ std::vector<bool> sampled_sparse_outliers(const std::vector<Point>& points, cons
   for_each_range<ConcurrencyTag>(n, [&](std::size_t begin, std::size_t end) {
     for(std::size_t i = begin; i < end; ++i)
     {
-      const std::size_t c = lattice.index(lattice.cell_of(point_xyz(points[i])));
+      const std::size_t c = lattice.index(lattice.cell_of(to_vec3(points[i])));
       flags[i] = !((covered[c / 64] >> (c % 64)) & 1);
     }
   }, 1 << 14);

@@ -8,7 +8,6 @@
 /// show: one per cell of a fraction of the finest voxel. Not part of the public API.
 
 #include <CGAL/assertions.h>
-#include <CGAL/number_utils.h>
 
 #include <algorithm>
 #include <array>
@@ -22,13 +21,6 @@ namespace CGAL {
 namespace DF_L1 {
 namespace internal {
 
-// the coordinates of a point as doubles
-template <class Point>
-std::array<double, 3> point_xyz(const Point& p)
-{
-  return {{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())}};
-}
-
 // Cubic cells of one size over the bounding box of a set of points; a position outside
 // the box falls in the nearest cell.
 class Cell_lattice
@@ -36,27 +28,17 @@ class Cell_lattice
 public:
   Cell_lattice() = default;
 
-  // the lattice of cells of size `cell` over the `n` points `xyz(i)` (arrays of 3 doubles)
-  template <class Xyz>
-  Cell_lattice(std::size_t n, const Xyz& xyz, double cell) : cell_(cell)
+  // the lattice of cells of size `cell` over the box of lower corner `lo` and extent
+  // `extent` (in the frame of the points it will locate)
+  Cell_lattice(const std::array<double, 3>& lo, const std::array<double, 3>& extent, double cell)
+    : cell_(cell), lo_(lo)
   {
-    if(n == 0 || !(cell > 0))
+    if(!(cell > 0))
       return;
-    std::array<double, 3> hi = xyz(0);
-    lo_ = hi;
-    for(std::size_t i = 0; i < n; ++i)
-    {
-      const std::array<double, 3> p = xyz(i);
-      for(int a = 0; a < 3; ++a)
-      {
-        lo_[a] = (std::min)(lo_[a], p[a]);
-        hi[a] = (std::max)(hi[a], p[a]);
-      }
-    }
     cells_ = 1;
     for(int a = 0; a < 3; ++a)
     {
-      const double d = std::floor((hi[a] - lo_[a]) / cell_) + 1;
+      const double d = std::floor(extent[a] / cell_) + 1;
       dims_[a] = std::size_t((std::min)(d, 1e9));
       cells_ *= d;
     }
@@ -146,7 +128,6 @@ public:
 
   // whether the cap is in force (some eligible points are left out)
   bool active() const { return !representatives_.empty(); }
-  const Cell_lattice& lattice() const { return lattice_; }
   // the input indices of the representatives, ascending (empty when not active())
   const std::vector<std::size_t>& representatives() const { return representatives_; }
   // whether the point of input index i is analysed (every point when not active())
