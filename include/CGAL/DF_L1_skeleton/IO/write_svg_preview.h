@@ -21,6 +21,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <iterator>
 #include <limits>
 #include <ostream>
 #include <string>
@@ -232,30 +233,58 @@ Svg_row svg_row(const std::string& path, const Preview_panel<Traits>& panel)
   return row;
 }
 
-inline void write_svg(std::ostream& os, const std::vector<Svg_point>& all_points,
-                      const std::vector<Svg_row>& rows, const Preview_options& opt)
+/// The input points as drawn: the strided subset shown and the bounding box of all of
+/// them, so that a cloud of millions of points is never copied whole.
+struct Svg_cloud
 {
-  // Deterministic subsample: evenly strided indices.
-  std::vector<Svg_point> pts;
-  const std::size_t n = all_points.size();
-  const std::size_t shown = std::min(n, opt.max_points);
-  pts.reserve(shown);
-  for(std::size_t k = 0; k < shown; ++k)
-    pts.push_back(all_points[static_cast<std::size_t>(
-        static_cast<unsigned long long>(k) * n / shown)]);
-
-  // One bounding box for everything, so that all views and rows share a scale.
+  std::vector<Svg_point> shown;
+  std::size_t total = 0;
   Svg_point lo{{std::numeric_limits<double>::max(), std::numeric_limits<double>::max(),
                 std::numeric_limits<double>::max()}};
   Svg_point hi{{-std::numeric_limits<double>::max(), -std::numeric_limits<double>::max(),
                 -std::numeric_limits<double>::max()}};
+};
+
+/// Checks every point and keeps the deterministic, evenly strided subset of at most
+/// `max_points` of them.
+template <class PointRange>
+Svg_cloud svg_cloud(const std::string& path, const PointRange& points, std::size_t max_points)
+{
+  Svg_cloud cloud;
+  cloud.total = static_cast<std::size_t>(std::distance(std::begin(points), std::end(points)));
+  const std::size_t shown = std::min(cloud.total, max_points);
+  cloud.shown.reserve(shown);
+  const auto strided = [&](std::size_t k) {
+    return static_cast<std::size_t>(static_cast<unsigned long long>(k) * cloud.total / shown);
+  };
+  std::size_t i = 0;
+  for(const auto& p : points) {
+    const Svg_point q = svg_point(path, p, "point", i);
+    for(int d = 0; d < 3; ++d) {
+      cloud.lo[d] = std::min(cloud.lo[d], q[d]);
+      cloud.hi[d] = std::max(cloud.hi[d], q[d]);
+    }
+    if(cloud.shown.size() < shown && strided(cloud.shown.size()) == i)
+      cloud.shown.push_back(q);
+    ++i;
+  }
+  return cloud;
+}
+
+inline void write_svg(std::ostream& os, const Svg_cloud& cloud,
+                      const std::vector<Svg_row>& rows, const Preview_options& opt)
+{
+  const std::vector<Svg_point>& pts = cloud.shown;
+  const std::size_t n = cloud.total;
+
+  // One bounding box for everything, so that all views and rows share a scale.
+  Svg_point lo = cloud.lo, hi = cloud.hi;
   auto extend = [&](const Svg_point& p) {
     for(int i = 0; i < 3; ++i) {
       lo[i] = std::min(lo[i], p[i]);
       hi[i] = std::max(hi[i], p[i]);
     }
   };
-  for(const Svg_point& p : all_points) extend(p);
   for(const Svg_row& r : rows) {
     for(const Svg_point& p : r.vertices) extend(p);
     for(const Svg_point& p : r.stage_points) extend(p);
@@ -480,15 +509,6 @@ inline void write_svg(std::ostream& os, const std::vector<Svg_point>& all_points
   os.write(s.data(), static_cast<std::streamsize>(s.size()));
 }
 
-template <class PointRange>
-std::vector<Svg_point> svg_points(const std::string& path, const PointRange& points)
-{
-  std::vector<Svg_point> pts;
-  for(const auto& p : points)
-    pts.push_back(svg_point(path, p, "point", pts.size()));
-  return pts;
-}
-
 } // namespace internal
 
 /// \ingroup PkgDFL1SkeletonRef
@@ -519,12 +539,12 @@ void write_svg_preview(const std::string& path, const PointRange& points,
                        const std::vector<Preview_panel<Traits>>& rows,
                        const Preview_options& opt = Preview_options())
 {
-  const std::vector<internal::Svg_point> pts = internal::svg_points(path, points);
+  const internal::Svg_cloud cloud = internal::svg_cloud(path, points, opt.max_points);
   std::vector<internal::Svg_row> svg_rows;
   for(const Preview_panel<Traits>& panel : rows)
     svg_rows.push_back(internal::svg_row(path, panel));
   write_file_atomically(
-      path, [&](std::ostream& os) { internal::write_svg(os, pts, svg_rows, opt); });
+      path, [&](std::ostream& os) { internal::write_svg(os, cloud, svg_rows, opt); });
 }
 
 /// \ingroup PkgDFL1SkeletonRef
@@ -540,9 +560,9 @@ template <class PointRange>
 void write_svg_preview(const std::string& path, const PointRange& points,
                        const Preview_options& opt = Preview_options())
 {
-  const std::vector<internal::Svg_point> pts = internal::svg_points(path, points);
+  const internal::Svg_cloud cloud = internal::svg_cloud(path, points, opt.max_points);
   write_file_atomically(path, [&](std::ostream& os) {
-    internal::write_svg(os, pts, std::vector<internal::Svg_row>(), opt);
+    internal::write_svg(os, cloud, std::vector<internal::Svg_row>(), opt);
   });
 }
 
