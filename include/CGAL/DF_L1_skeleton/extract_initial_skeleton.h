@@ -226,8 +226,10 @@ Initial_skeleton<Traits> extract_initial_skeleton(const Distance_field<Traits>& 
     internal::join_pieces_within_shape(result.graph, field,
                                        thin.depth.empty() ? internal::occupied_depth(field) : thin.depth);
   // The thin limbs that the thinning ate from their flat tips get their branches back.
+  // A twig 1.75 voxels in radius holds voxels sqrt(2) deep along its axis: only the
+  // layer of depth 1 is surface.
   if(has_thin)
-    internal::add_missing_branches(result.graph, field, thin.depth, thin.voxels, 4.0 + 2 * noise / voxel, 1.5);
+    internal::add_missing_branches(result.graph, field, thin.depth, thin.voxels, 4.0 + 2 * noise / voxel, 1.0, 1.3);
   return result;
 }
 
