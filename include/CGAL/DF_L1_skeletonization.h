@@ -165,7 +165,7 @@ public:
     const DF_L1::internal::Cell_lattice lattice = density_lattice();
     if(lattice.size() > 0)
     {
-      const std::size_t occupied = DF_L1::internal::occupied_cells(lattice, points_.size(), point_coordinates());
+      const std::size_t occupied = DF_L1::internal::occupied_cells(lattice, points_.size(), point_coordinates()).count;
       if(double(occupied) <= dense_share * double(points_.size()))
         sparse_outliers_ = DF_L1::internal::sampled_sparse_outliers<ConcurrencyTag>(
           points_, lattice, (std::max)(std::size_t(1), points_.size() / (2 * occupied)));
@@ -270,7 +270,7 @@ public:
       const std::vector<Point> analysed = analysed_input_points();
       const std::vector<bool> flags = voxel_outlier_flags(analysed, denoised_ ? &kept_points_ : nullptr);
       const std::vector<char> owner_flag = for_each_left_out<char>(0, [&](std::size_t i) {
-        return char(flags[density_cap_.owner(DF_L1::internal::to_vec3(points_[i]))]);
+        return char(flags[owner_position(i)]);
       });
       outliers_.assign(points_.size(), false);
       for(std::size_t i = 0, r = 0; i < points_.size(); ++i)
@@ -824,7 +824,7 @@ private:
     }
     // the vertex of each point (in parallel), then the lists in point order
     const std::vector<std::size_t> vertex = for_each_left_out<std::size_t>(none, [&](std::size_t i) {
-      return outliers_[i] ? none : vertex_of[density_cap_.owner(DF_L1::internal::to_vec3(points_[i]))];
+      return outliers_[i] ? none : vertex_of[owner_position(i)];
     });
     std::vector<std::size_t> count(boost::num_vertices(g), 0);
     for(std::size_t i = 0, r = 0; i < points_.size(); ++i)
@@ -876,12 +876,11 @@ private:
     return [this](std::size_t i) { return DF_L1::internal::to_vec3(points_[i]); };
   }
 
-  // the input index of the representative that stands for the input point i, left out
-  // by the density cap
-  std::size_t owner_of(std::size_t i) const
-  {
-    return density_cap_.representatives()[density_cap_.owner(DF_L1::internal::to_vec3(points_[i]))];
-  }
+  // the position in density_cap_.representatives() of the representative that stands
+  // for the input point i, left out by the density cap
+  std::size_t owner_position(std::size_t i) const { return density_cap_.owner(DF_L1::internal::to_vec3(points_[i])); }
+  // the input index of that representative
+  std::size_t owner_of(std::size_t i) const { return density_cap_.representatives()[owner_position(i)]; }
 
   // the points the grid and the contraction are built from
   std::vector<Point> kept_and_added_points() const

@@ -387,7 +387,7 @@ TEST_CASE("initial skeleton: a limb that no curve enters gets a branch, a bump d
   {
     const DF::Distance_field<Kernel> field = field_with_limb(14);
     DF::Skeleton_graph<Kernel> g = bar_axis(field);
-    CHECK(DF::internal::add_missing_branches(g, field, DF::internal::occupied_depth(field), limb_voxels(field), 4.0, 1.5) == 1);
+    CHECK(DF::internal::add_missing_branches(g, field, DF::internal::occupied_depth(field), limb_voxels(field), 4.0, 1.5, 1.5) == 1);
     const DF::Skeleton_statistics s = DF::skeleton_statistics(g);
     CHECK(s.components == 1);
     CHECK(s.cycles == 0);
@@ -405,7 +405,7 @@ TEST_CASE("initial skeleton: a limb that no curve enters gets a branch, a bump d
       const DF::Distance_field<Kernel> field = field_with_limb(limb);
       DF::Skeleton_graph<Kernel> g = bar_axis(field);
       const std::vector<char> tips = limb == 14 ? std::vector<char>(field.size(), 0) : limb_voxels(field);
-      CHECK(DF::internal::add_missing_branches(g, field, DF::internal::occupied_depth(field), tips, 4.0, 1.5) == 0);
+      CHECK(DF::internal::add_missing_branches(g, field, DF::internal::occupied_depth(field), tips, 4.0, 1.5, 1.5) == 0);
       CHECK(boost::num_vertices(g) == 36);
     }
   }

@@ -233,6 +233,15 @@ Svg_row svg_row(const std::string& path, const Preview_panel<Traits>& panel)
   return row;
 }
 
+/// Grows the box [lo, hi] to hold p.
+inline void extend_box(Svg_point& lo, Svg_point& hi, const Svg_point& p)
+{
+  for(int a = 0; a < 3; ++a) {
+    lo[a] = std::min(lo[a], p[a]);
+    hi[a] = std::max(hi[a], p[a]);
+  }
+}
+
 /// The input points as drawn: the strided subset shown and the bounding box of all of
 /// them, so that a cloud of millions of points is never copied whole.
 struct Svg_cloud
@@ -260,10 +269,7 @@ Svg_cloud svg_cloud(const std::string& path, const PointRange& points, std::size
   std::size_t i = 0;
   for(const auto& p : points) {
     const Svg_point q = svg_point(path, p, "point", i);
-    for(int d = 0; d < 3; ++d) {
-      cloud.lo[d] = std::min(cloud.lo[d], q[d]);
-      cloud.hi[d] = std::max(cloud.hi[d], q[d]);
-    }
+    extend_box(cloud.lo, cloud.hi, q);
     if(cloud.shown.size() < shown && strided(cloud.shown.size()) == i)
       cloud.shown.push_back(q);
     ++i;
@@ -279,15 +285,9 @@ inline void write_svg(std::ostream& os, const Svg_cloud& cloud,
 
   // One bounding box for everything, so that all views and rows share a scale.
   Svg_point lo = cloud.lo, hi = cloud.hi;
-  auto extend = [&](const Svg_point& p) {
-    for(int i = 0; i < 3; ++i) {
-      lo[i] = std::min(lo[i], p[i]);
-      hi[i] = std::max(hi[i], p[i]);
-    }
-  };
   for(const Svg_row& r : rows) {
-    for(const Svg_point& p : r.vertices) extend(p);
-    for(const Svg_point& p : r.stage_points) extend(p);
+    for(const Svg_point& p : r.vertices) extend_box(lo, hi, p);
+    for(const Svg_point& p : r.stage_points) extend_box(lo, hi, p);
   }
   if(lo[0] > hi[0]) { // nothing at all
     lo = {{0., 0., 0.}};

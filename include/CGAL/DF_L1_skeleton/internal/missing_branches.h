@@ -44,7 +44,7 @@ namespace internal {
 template <class Traits>
 std::size_t add_missing_branches(Skeleton_graph<Traits>& g, const Distance_field<Traits>& field,
                                  const std::vector<float>& depth, const std::vector<char>& tips, double reach,
-                                 double per_radius, double min_depth = 1.5)
+                                 double per_radius, double min_depth)
 {
   typedef typename boost::graph_traits<Skeleton_graph<Traits>>::vertex_descriptor vertex;
   typedef std::pair<double, std::size_t> Entry;

@@ -3,6 +3,7 @@
 #ifndef CGAL_DF_L1_SKELETON_INTERNAL_UNIFORM_GRID_H
 #define CGAL_DF_L1_SKELETON_INTERNAL_UNIFORM_GRID_H
 
+#include <CGAL/DF_L1_skeleton/internal/cell_lattice.h>
 #include <CGAL/DF_L1_skeleton/internal/parallel_for.h>
 
 #include <algorithm>
@@ -268,20 +269,11 @@ private:
   double coarsened_for_k_nearest(const std::vector<std::array<double, 3>>& points, const std::array<double, 3>& hi,
                                  double per_cell = 4) const
   {
-    std::array<std::size_t, 3> dims;
-    for(int a = 0; a < 3; ++a)
-      dims[a] = std::size_t(std::floor((hi[a] - lo_[a]) / cell_)) + 1;
-    std::vector<bool> occupied(dims[0] * dims[1] * dims[2], false);
-    std::size_t count = 0;
-    for(const auto& p : points)
-    {
-      std::size_t c[3];
-      for(int a = 0; a < 3; ++a)
-        c[a] = std::min(std::size_t((std::max)(std::floor((p[a] - lo_[a]) / cell_), 0.0)), dims[a] - 1);
-      const std::size_t index = (c[2] * dims[1] + c[1]) * dims[0] + c[0];
-      count += !occupied[index];
-      occupied[index] = true;
-    }
+    const Cell_lattice lattice(lo_, {{hi[0] - lo_[0], hi[1] - lo_[1], hi[2] - lo_[2]}}, cell_);
+    Cell_occupancy occupancy = occupied_cells(lattice, points.size(), [&](std::size_t i) { return points[i]; });
+    std::vector<bool>& occupied = occupancy.cells;
+    std::size_t count = occupancy.count;
+    std::array<std::size_t, 3> dims = lattice.dims();
     double cell = cell_;
     while(count > 1 && double(points.size()) < per_cell * double(count))
     {
