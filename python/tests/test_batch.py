@@ -97,7 +97,8 @@ def test_batch_on_two_workers_equals_the_tool_and_resumes(clouds, client, work_d
 
 
 def test_a_killed_worker_loses_no_file_and_does_none_twice(clouds, work_dir):
-    """Kills (SIGKILL) a worker while it runs a task; the nanny starts a new one, the
+    """Kills (SIGKILL) a worker while it runs a task (again if the task had just
+    finished, up to five kills); the nanny starts a new one, the
     scheduler gives the task to a worker again. Every file must end up written exactly
     once: each output path is watched during the batch, and a second write would show a
     new inode (the outputs are renamed into place)."""
@@ -127,7 +128,9 @@ def test_a_killed_worker_loses_no_file_and_does_none_twice(clouds, work_dir):
             while runner.is_alive() and time.monotonic() < deadline:
                 watch()
                 reports = [n for n in inodes if n.endswith(".json")]
-                if not killed and len(reports) >= 8:
+                interrupted = [k for k, finished in killed if not finished]
+                # a task can finish between the query and the kill: then kill again, later
+                if not interrupted and len(killed) < 5 and len(reports) >= 8 + 4 * len(killed):
                     pids = client.run(os.getpid)
                     address = sorted(pids)[0]
                     keys = client.run(executing, workers=[address]).get(address, [])
@@ -139,8 +142,7 @@ def test_a_killed_worker_loses_no_file_and_does_none_twice(clouds, work_dir):
             runner.join()
             watch()
     assert killed, "no worker was killed"
-    key, finished_before_kill = killed[0]
-    assert not finished_before_kill, f"{key} had finished before the kill"
+    assert any(not finished for _, finished in killed), f"every kill came after its task had finished: {killed}"
     records = result["records"]
     assert [r["status"] for r in records] == ["ok"] * 40, [r["error"] for r in records if r["error"]]
     written_twice = {name: ids for name, ids in inodes.items() if len(ids) > 1 and name != "summary.jsonl"}
