@@ -76,11 +76,54 @@ void usage(std::ostream& os)
         "         [--command TEXT] [--scan-sheet PATH] [--failure-sheet PATH] [--list] [--quiet]\n";
 }
 
-/// The input points and the skeleton of a case, drawn for a human to look at.
+/// The designed skeleton of a corpus shape as a graph, for the previews: its axis
+/// curves, sampled every voxel, joined where they meet (so its ends are the designed tips).
+DF::Skeleton_graph<K> designed_skeleton(const DF_L1_test::Shape& shape, double voxel)
+{
+  DF::Skeleton_graph<K> g;
+  std::vector<std::pair<Point, std::size_t>> nodes; // curve ends already in g
+  const double tolerance = 1e-6 * shape.bbox_diagonal();
+  auto vertex_at = [&](const Point& p, double radius) {
+    for(const auto& n : nodes)
+      if(CGAL::squared_distance(n.first, p) <= tolerance * tolerance)
+        return n.second;
+    const std::size_t v = boost::add_vertex(g);
+    g[v].point = p;
+    g[v].radius = radius;
+    nodes.emplace_back(p, v);
+    return v;
+  };
+  for(const DF_L1_test::Skeleton_polyline& curve : shape.skeleton_polylines(voxel)) {
+    const std::size_t n = curve.points.size();
+    if(n < 2)
+      continue;
+    std::size_t previous = vertex_at(curve.points.front(), curve.radii.front());
+    for(std::size_t i = 1; i < n; ++i) {
+      std::size_t v;
+      if(i + 1 == n)
+        v = vertex_at(curve.points.back(), curve.radii.back());
+      else {
+        v = boost::add_vertex(g);
+        g[v].point = curve.points[i];
+        g[v].radius = curve.radii[i];
+      }
+      if(v != previous)
+        boost::add_edge(previous, v, g);
+      previous = v;
+    }
+  }
+  return g;
+}
+
+/// The input points and the skeleton of a case, drawn for a human to look at; with
+/// `designed`, a row of the designed skeleton first.
 void write_preview(const std::string& path, const std::vector<Point>& points, const std::string& title,
-                   CGAL::DF_L1_skeletonization<K, CGAL::Sequential_tag>& s)
+                   CGAL::DF_L1_skeletonization<K, CGAL::Sequential_tag>& s,
+                   const DF::Skeleton_graph<K>* designed = nullptr)
 {
   std::vector<DF::Preview_panel<K>> rows;
+  if(designed)
+    rows.push_back({"designed", designed});
   rows.push_back({"final", &s.skeleton()});
   rows.push_back({"initial", &s.initial_skeleton().graph});
   DF::Preview_options opt;
@@ -123,9 +166,11 @@ Row run_corpus_case(const Options& o, const DF_L1_test::Shape& shape, const std:
     row.ratio = q.mean_axis_ratio;
     row.outside = q.outside_fraction;
     row.coverage = q.axis_coverage;
-    if(o.previews == "all" || (o.previews == "failures" && !row.ok))
+    if(o.previews == "all" || (o.previews == "failures" && !row.ok)) {
+      const DF::Skeleton_graph<K> designed = designed_skeleton(shape, voxel);
       write_preview(o.out_dir + "/previews/" + row.name + "__" + d.name + ".svg", sample.points,
-                    row.name + " " + d.name + ": got " + row.got + ", expected " + row.expected, s);
+                    row.name + " " + d.name + ": got " + row.got + ", expected " + row.expected, s, &designed);
+    }
   } catch(const std::exception& e) {
     row.error = e.what();
     row.ok = false;
