@@ -247,3 +247,16 @@ TEST_CASE("corpus: the sparse half of an unevenly sampled 2,000-point cloud keep
   run("disjoint", 1, "uneven_2000");
   run("close_parts", 4, "uneven_2000");
 }
+
+TEST_CASE("corpus: the end of a thick body keeps its branch in the skeleton graph", "[corpus]")
+{
+  // A capsule's stub beyond the junction where its limbs or its handle leave it is 2 to 3
+  // of its radii long and its tip as deep as that junction: the initial skeleton kept it,
+  // and the graph's hair rule (longer than the junction's radius plus the tip's diameter)
+  // dropped it. The tip's radius now counts up to half the junction's. Each case failed.
+  const auto run = designed_topology_checked;
+  run("loops", 6, "clean");
+  run("loops", 6, "holes");
+  run("tapering", 17, "holes");
+  run("tapering", 17, "sparse_2000");
+}

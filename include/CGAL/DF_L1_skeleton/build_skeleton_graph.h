@@ -155,10 +155,13 @@ Skeleton_graph<Traits> build_skeleton_graph(const Contracted_samples<Traits>& sa
     // cases with the designed topology; 1.5 and 2: 70). Where a limb is thin at the
     // junction (a camel's knee), its radius there understates the bump: the branch must
     // also reach a diameter of its own tip beyond the junction's ball (the camel's two
-    // knee spurs go, the 72 cases keep their topology).
+    // knee spurs go, the 72 cases keep their topology), the tip's radius counted up to
+    // half the junction's: the end of a thick body (a capsule's stub, 2 to 3 of its radii
+    // long) is as deep as its junction, and a whole diameter beyond that ball removed it.
     g.prune_spurs([&](std::size_t junction, std::size_t tip) {
       const double rj = (std::max)(lookup.distance(g.x[junction]), 2 * voxel);
-      return (std::max)(1.5 * rj, rj + 2 * (std::max)(lookup.distance(g.x[tip]), voxel));
+      const double tip_radius = (std::min)((std::max)(lookup.distance(g.x[tip]), voxel), 0.5 * rj);
+      return (std::max)(1.5 * rj, rj + 2 * tip_radius);
     });
     // Twin ends: two terminal chains from one junction whose tips lie within 1.5 times
     // the larger of their depths (and a voxel) are the two halves of one limb around a
