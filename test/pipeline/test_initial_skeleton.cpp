@@ -1,11 +1,14 @@
 // Geometry and topology of the initial skeleton (paper, section 5) on synthetic shapes
 // with known skeletons, and the voxel topology it relies on.
+#include "evaluation/shape_corpus.h"
+#include "evaluation/skeleton_quality.h"
 #include "evaluation/synthetic_shapes.h"
 #include "support/threads.h"
 
 #include <CGAL/DF_L1_skeleton.h>
 #include <CGAL/DF_L1_skeleton/internal/contractible_cycles.h>
 #include <CGAL/DF_L1_skeleton/internal/missing_branches.h>
+#include <CGAL/DF_L1_skeleton/internal/spur_pruning.h>
 #include <CGAL/DF_L1_skeleton/internal/voxel_curve_graph.h>
 #include <CGAL/DF_L1_skeleton/internal/voxel_topology.h>
 
@@ -15,6 +18,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <string>
 #include <vector>
@@ -408,5 +412,86 @@ TEST_CASE("initial skeleton: a limb that no curve enters gets a branch, a bump d
       CHECK(DF::internal::add_missing_branches(g, field, DF::internal::occupied_depth(field), tips, 4.0, 1.5, 1.5) == 0);
       CHECK(boost::num_vertices(g) == 36);
     }
+  }
+}
+
+TEST_CASE("initial skeleton: the points keep a short twig that the balls of its parent cover, not hair", "[initial][spurs]")
+{
+  // A bar along x (balls of radius 4 voxels, surface sampled at 4.5) and a chain of 5
+  // voxels out of its side along y, with balls of radius 1: the bar's balls cover it to
+  // within the pruning's slack (2 voxels plus its radius). Either a twig 2.5 voxels in
+  // radius ends there, its cap 3.5 voxels above the bar's balls, or the bar is bare.
+  const double pi = 3.14159265358979323846, R = 4.5, r = 2.5, step = 0.3;
+  auto ends_after_pruning = [&](bool twig, bool with_points) {
+    DF::Skeleton_graph<Kernel> g;
+    for(int i = 0; i <= 40; ++i)
+    {
+      const std::size_t v = boost::add_vertex(g);
+      g[v].point = Point_3(i, 0, 0);
+      g[v].radius = 4;
+      if(i > 0)
+        boost::add_edge(v - 1, v, g);
+    }
+    for(int k = 1; k <= 5; ++k)
+    {
+      const std::size_t v = boost::add_vertex(g);
+      g[v].point = Point_3(20, k, 0);
+      g[v].radius = 1;
+      boost::add_edge(k == 1 ? 20 : v - 1, v, g);
+    }
+    std::vector<std::array<double, 3>> xyz;
+    for(double x = 0; x <= 40; x += step)
+      for(double a = 0; a < 2 * pi; a += step / R)
+      {
+        const std::array<double, 3> p{{x, R * std::cos(a), R * std::sin(a)}};
+        if(!twig || p[1] < 0 || std::hypot(p[0] - 20, p[2]) >= r)
+          xyz.push_back(p);
+      }
+    if(twig)
+    {
+      for(double y = std::sqrt(R * R - r * r); y <= 5; y += step)
+        for(double a = 0; a < 2 * pi; a += step / r)
+          xyz.push_back({{20 + r * std::cos(a), y, r * std::sin(a)}});
+      for(double t = step / 2; t < pi / 2; t += step / r)
+        for(double a = 0; a < 2 * pi; a += step / (r * std::sin(t)))
+          xyz.push_back({{20 + r * std::sin(t) * std::cos(a), 5 + r * std::cos(t), r * std::sin(t) * std::sin(a)}});
+    }
+    const DF::internal::Uniform_grid grid(xyz, 2.0);
+    DF::internal::prune_spurs(g, 1.0, 1.0, 0.0,
+                              with_points ? DF::internal::Point_support{&xyz, &grid} : DF::internal::Point_support());
+    return DF::skeleton_statistics(g).end_points;
+  };
+  CHECK(ends_after_pruning(true, true) == 3);
+  CHECK(ends_after_pruning(true, false) == 2);
+  CHECK(ends_after_pruning(false, true) == 2);
+  CHECK(ends_after_pruning(false, false) == 2);
+
+  SECTION("through the named parameter, on trees of the corpus: more of their twigs, no more ends than they have")
+  {
+    std::size_t found_without = 0, found_with = 0;
+    for(int index : {17, 19})
+    {
+      const DF_L1_test::Shape shape = DF_L1_test::corpus_shape("trees", index);
+      const DF_L1_test::Sample sample =
+        DF_L1_test::corpus_sample(shape, index, DF_L1_test::corpus_degradation("clean"));
+      const DF::Distance_field<Kernel> field = DF::compute_distance_field(DF::voxelize_point_set(sample.points));
+      const double voxel = CGAL::to_double(field.voxel_size);
+      auto tips_found = [&](const DF::Skeleton_graph<Kernel>& g) {
+        std::size_t found = 0;
+        for(const DF_L1_test::Tip_recall& t : DF_L1_test::tip_recall(shape, g, voxel))
+          found += t.found;
+        return found;
+      };
+      const DF::Skeleton_graph<Kernel> without = DF::extract_initial_skeleton(field).graph;
+      const DF::Skeleton_graph<Kernel> with =
+        DF::extract_initial_skeleton(field, CGAL::parameters::support_points(std::cref(sample.points))).graph;
+      const std::size_t designed = DF_L1_test::tip_recall(shape, with, voxel).size();
+      INFO("trees_" << index << ": designed tips " << designed << "; found without the points " << tips_found(without)
+                    << ", with them " << tips_found(with) << "; end points " << DF::skeleton_statistics(with).end_points);
+      CHECK(DF::skeleton_statistics(with).end_points <= designed);
+      found_without += tips_found(without);
+      found_with += tips_found(with);
+    }
+    CHECK(found_with >= found_without + 2);
   }
 }

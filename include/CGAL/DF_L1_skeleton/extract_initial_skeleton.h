@@ -16,9 +16,11 @@
 #include <CGAL/DF_L1_skeleton/internal/join_pieces.h>
 #include <CGAL/DF_L1_skeleton/internal/missing_branches.h>
 #include <CGAL/DF_L1_skeleton/internal/parallel_for.h>
+#include <CGAL/DF_L1_skeleton/internal/point_range.h>
 #include <CGAL/DF_L1_skeleton/internal/ridge_voxels.h>
 #include <CGAL/DF_L1_skeleton/internal/spur_pruning.h>
 #include <CGAL/DF_L1_skeleton/internal/thinning_volume.h>
+#include <CGAL/DF_L1_skeleton/internal/uniform_grid.h>
 #include <CGAL/DF_L1_skeleton/internal/voxel_components.h>
 #include <CGAL/DF_L1_skeleton/internal/voxel_curve_graph.h>
 #include <CGAL/DF_L1_skeleton/internal/voxel_morphology.h>
@@ -26,6 +28,7 @@
 #include <CGAL/DF_L1_skeleton/skeleton_statistics.h>
 
 #include <CGAL/Named_function_parameters.h>
+#include <CGAL/property_map.h>
 #include <CGAL/tags.h>
 #include <CGAL/squared_distance_3.h>
 
@@ -33,6 +36,8 @@
 #include <numeric>
 #include <array>
 #include <cmath>
+#include <functional>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -90,6 +95,15 @@ namespace DF_L1 {
 ///     \cgalParamType{`bool`}
 ///     \cgalParamDefault{`false`}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{support_points}
+///     \cgalParamDescription{the points the field was computed from, in its frame, passed with
+///       `std::cref()`: a terminal branch whose tip has points more than 3 voxels (plus twice the
+///       surface noise) outside the balls of the rest of the skeleton is kept, although those balls
+///       cover its own to within the pruning's slack (the cap of a short twig beside its parent);
+///       `DF_L1_skeletonization` passes the points it analyses}
+///     \cgalParamType{a `std::reference_wrapper` to a range of `Traits::Point_3`}
+///     \cgalParamDefault{none: the pruning reads the field alone}
+///   \cgalParamNEnd
 ///   \cgalParamNBegin{surface_noise}
 ///     \cgalParamDescription{the noise of the sampled surface, in input units (`estimate_surface_noise()`):
 ///       the cover test of the spur pruning grows its slack by twice it; `DF_L1_skeletonization` passes
@@ -117,7 +131,8 @@ namespace internal {
 // DF_L1_skeletonization checks its memory estimate there.
 template <class ConcurrencyTag, class Traits, class NamedParameters, class BeforeRepairs>
 Initial_skeleton<Traits> extract_initial_skeleton(const Distance_field<Traits>& field, const NamedParameters& np,
-                                                  const BeforeRepairs& before_repairs)
+                                                  const BeforeRepairs& before_repairs,
+                                                  const Point_support& support = Point_support())
 {
   const double c = internal::thinning_coefficient(np, "initial skeleton");
   const double spur_ratio = internal::spur_length_ratio(np, "initial skeleton");
@@ -214,9 +229,9 @@ Initial_skeleton<Traits> extract_initial_skeleton(const Distance_field<Traits>& 
     const double occupied_radius = in_occupied ? values[v] * voxel : 0.0;
     result.graph[d].radius = (std::max)({CGAL::to_double(field.distance(v)), thin_radius, occupied_radius});
   }
-  internal::prune_spurs(result.graph, spur_ratio, voxel, noise);
+  internal::prune_spurs(result.graph, spur_ratio, voxel, noise, support);
   if(skeleton_statistics(result.graph).cycles > 0 && internal::cut_contractible_cycles(result.graph, field, field.labels) > 0)
-    internal::prune_spurs(result.graph, spur_ratio, voxel, noise);
+    internal::prune_spurs(result.graph, spur_ratio, voxel, noise, support);
   // Pieces within one component of the occupied voxels are joined; the depth of the
   // thin parts is the same transform when it was computed.
   const bool join = skeleton_statistics(result.graph).components > 1;
@@ -238,7 +253,16 @@ Initial_skeleton<Traits> extract_initial_skeleton(const Distance_field<Traits>& 
 template <class ConcurrencyTag, class Traits, class NamedParameters>
 Initial_skeleton<Traits> extract_initial_skeleton(const Distance_field<Traits>& field, const NamedParameters& np)
 {
-  return internal::extract_initial_skeleton<ConcurrencyTag>(field, np, [] {});
+  const auto& points = parameters::get_parameter_reference(np, internal_np::df_l1_support_points);
+  if constexpr(std::is_same_v<std::decay_t<decltype(points)>, internal_np::Param_not_found>)
+    return internal::extract_initial_skeleton<ConcurrencyTag>(field, np, [] {});
+  else
+  {
+    const std::vector<std::array<double, 3>> xyz =
+      internal::to_xyz(points, CGAL::Identity_property_map<typename Traits::Point_3>());
+    const internal::Uniform_grid grid(xyz, 2 * CGAL::to_double(field.voxel_size));
+    return internal::extract_initial_skeleton<ConcurrencyTag>(field, np, [] {}, internal::Point_support{&xyz, &grid});
+  }
 }
 
 } // namespace DF_L1

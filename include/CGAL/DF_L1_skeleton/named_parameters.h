@@ -32,6 +32,7 @@
 namespace CGAL {
 namespace internal_np {
 enum df_l1_voxel_resolution_t { df_l1_voxel_resolution };
+enum df_l1_support_points_t { df_l1_support_points };
 enum df_l1_initial_voxel_size_t { df_l1_initial_voxel_size };
 enum df_l1_exterior_propagation_steps_t { df_l1_exterior_propagation_steps };
 enum df_l1_upsampling_t { df_l1_upsampling };
@@ -115,6 +116,12 @@ CGAL_DF_L1_ADD_NAMED_PARAMETER(df_l1_thin_parts, thin_parts)
 /// boundary shell is several voxels thick and leaves thin limbs no interior voxel two
 /// deep). `thin_parts` is then moot: the occupied voxels hold the thin parts.
 CGAL_DF_L1_ADD_NAMED_PARAMETER(df_l1_occupied_depth, occupied_depth)
+/// \ingroup PkgDFL1SkeletonNamedParameters
+/// The points a distance field was computed from, passed with `std::cref()`, as evidence
+/// for the initial skeleton's terminal branches: one whose tip has points well outside the
+/// rest of the skeleton is not pruned (default: none; `DF_L1_skeletonization` passes the
+/// points it analyses). See `extract_initial_skeleton()`.
+CGAL_DF_L1_ADD_NAMED_PARAMETER(df_l1_support_points, support_points)
 /// \ingroup PkgDFL1SkeletonNamedParameters
 /// The noise of the sampled surface, in input units, as `estimate_surface_noise()` gives
 /// it (default 0; `DF_L1_skeletonization` passes its estimate): the initial skeleton's

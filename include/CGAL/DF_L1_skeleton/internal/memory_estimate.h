@@ -136,6 +136,9 @@ constexpr double memory_kept_bytes_per_point = 24; // of those 96: the kept (ana
 // cap's arrays; 100 to 115 B measured at 10M points (clean and noisy stick figures).
 constexpr double memory_dense_cloud_bytes_per_point = 110;
 constexpr double memory_held_bytes_per_added_point = 24;
+// Per analysed point, from the initial skeleton on: the evidence of its spur pruning and
+// gap cuts (their coordinates 24, and a grid of them: a sorted copy 24 and the order 8).
+constexpr double memory_support_bytes_per_analysed_point = 56;
 
 // The largest of the phases of the run, for the grid as built: the point stages (the
 // outlier test, the smoothing, the contraction: the per-point bytes of the initial model,
@@ -157,7 +160,7 @@ inline Memory_estimate refined_memory_estimate(const Voxel_stage_counts& c)
   const double analysed = c.analysed_points < 0 ? c.points : c.analysed_points;
   // the kept points are the analysed ones
   const double held_points = (memory_held_bytes_per_point - memory_kept_bytes_per_point) * c.points +
-                             memory_kept_bytes_per_point * analysed +
+                             (memory_kept_bytes_per_point + memory_support_bytes_per_analysed_point) * analysed +
                              memory_held_bytes_per_added_point * c.added_points;
   Memory_estimate e;
   e.points = c.points;

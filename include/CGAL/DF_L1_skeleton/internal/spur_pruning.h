@@ -9,10 +9,12 @@
 
 #include <CGAL/DF_L1_skeleton/Skeleton_graph.h>
 #include <CGAL/DF_L1_skeleton/internal/curve_graph_editing.h>
+#include <CGAL/DF_L1_skeleton/internal/uniform_grid.h>
 
 #include <CGAL/squared_distance_3.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <utility>
@@ -24,6 +26,15 @@ namespace internal {
 
 // The balls of a skeleton graph (vertex, local radius), to ask whether those of a chain
 // of vertices reach beyond the union of the others.
+// The points a skeleton was extracted from, as evidence for its terminal branches
+// (`prune_spurs()`); `grid` holds `points`. Empty: no evidence.
+struct Point_support
+{
+  const std::vector<std::array<double, 3>>* points = nullptr;
+  const Uniform_grid* grid = nullptr;
+  bool empty() const { return points == nullptr || grid == nullptr || points->empty(); }
+};
+
 class Ball_cover
 {
 public:
@@ -75,6 +86,22 @@ public:
     return false;
   }
 
+  // Whether the points of `support` within `window` of `tip` stick out of the union of
+  // the balls of the vertices u with `excluded[u] == 0` by more than `slack`: at least 3
+  // of them and a tenth, so that a few outliers or noisy points do not count.
+  bool points_stick_out(const Point_support& support, const std::array<double, 3>& tip, double window, double slack,
+                        const std::vector<char>& excluded) const
+  {
+    std::size_t near = 0, out = 0;
+    support.grid->for_each_in_ball(tip, window, [&](std::size_t i, double) {
+      ++near;
+      if(!covered((*support.points)[i], slack, excluded))
+        ++out;
+      return true;
+    });
+    return out >= 3 && 10 * out >= near;
+  }
+
 private:
   // Whether p lies within `slack` of a ball of a vertex u with `excluded[u] == 0`.
   bool covered(const std::array<double, 3>& p, double slack, const std::vector<char>& excluded) const
@@ -109,13 +136,20 @@ private:
 // junctions and on the ragged sides of thin parts), plus twice the surface `noise`, the
 // height of the bumps it raises. A limb, however short or tapered, sticks out of the body
 // it leaves.
+// The balls are as coarse as the voxels, and that slack also covers the cap of a short
+// twig beside its parent. With `support`, a covered branch is kept when the points within
+// its tip's radius plus 2 voxels stick out of the rest's balls by more than 3 voxels plus
+// twice the noise: the cap of a twig does, the points around hair lie on the surface that
+// the rest's balls reach.
 template <class Traits>
-void prune_spurs(Skeleton_graph<Traits>& g, double ratio, double voxel_size, double noise = 0)
+void prune_spurs(Skeleton_graph<Traits>& g, double ratio, double voxel_size, double noise = 0,
+                 const Point_support& support = Point_support())
 {
   typedef typename boost::graph_traits<Skeleton_graph<Traits>>::vertex_descriptor vertex;
   // Thin ends get less slack (a twig tip is a voxel or two wide) but more per radius.
   const double deep_slack = 2.5 * voxel_size + 2 * noise, deep_per_radius = 0.5;
   const double thin_slack = 2.0 * voxel_size + 2 * noise, thin_per_radius = 1.0;
+  const double point_slack = 3.0 * voxel_size + 2 * noise;
   for(bool changed = true; changed;)
   {
     changed = false;
@@ -183,8 +217,15 @@ void prune_spurs(Skeleton_graph<Traits>& g, double ratio, double voxel_size, dou
       const Ball_cover cover(g);
       auto sticks_out = [&](std::size_t c, const std::vector<char>& excluded) {
         const Candidate& k = candidates[c];
-        return k.thin ? cover.sticks_out(k.chain, excluded, thin_slack, thin_per_radius)
-                      : cover.sticks_out(k.chain, excluded, deep_slack, deep_per_radius);
+        if(k.thin ? cover.sticks_out(k.chain, excluded, thin_slack, thin_per_radius)
+                  : cover.sticks_out(k.chain, excluded, deep_slack, deep_per_radius))
+          return true;
+        if(support.empty())
+          return false;
+        const auto& tip = g[k.chain.front()];
+        const std::array<double, 3> at{{CGAL::to_double(tip.point.x()), CGAL::to_double(tip.point.y()),
+                                        CGAL::to_double(tip.point.z())}};
+        return cover.points_stick_out(support, at, CGAL::to_double(tip.radius) + 2 * voxel_size, point_slack, excluded);
       };
       std::vector<char> excluded(boost::num_vertices(g), 0);
       std::vector<std::size_t> covered;
