@@ -24,8 +24,6 @@ namespace CGAL {
 namespace DF_L1 {
 namespace internal {
 
-// The balls of a skeleton graph (vertex, local radius), to ask whether those of a chain
-// of vertices reach beyond the union of the others.
 // The points a skeleton was extracted from, as evidence for its terminal branches
 // (`prune_spurs()`); `grid` holds `points`. Empty: no evidence.
 struct Point_support
@@ -35,6 +33,8 @@ struct Point_support
   bool empty() const { return points == nullptr || grid == nullptr || points->empty(); }
 };
 
+// The balls of a skeleton graph (vertex, local radius), to ask whether those of a chain
+// of vertices, or points near it, reach beyond the union of the others.
 class Ball_cover
 {
 public:
