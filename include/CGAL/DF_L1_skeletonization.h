@@ -49,6 +49,7 @@
 #include <cmath>
 #include <iterator>
 #include <memory>
+#include <optional>
 #include <type_traits>
 #include <string>
 #include <vector>
@@ -319,13 +320,21 @@ public:
     refine_memory_estimate(false, "initial skeleton");
     // The analysed points are the evidence for the terminal branches of the spur pruning
     // (named parameter `support_points`), except in the clouds it smoothed, whose residual
-    // scatter would keep hair, and show the gaps cut below.
-    const std::vector<std::array<double, 3>> xyz =
-      DF_L1::internal::to_xyz(kept_points_, CGAL::Identity_property_map<Point>());
+    // scatter would keep hair, and show the gaps cut below: their grid is built when one
+    // of the two needs it.
     const double voxel = CGAL::to_double(field_->voxel_size);
-    const DF_L1::internal::Uniform_grid grid(xyz, 2 * voxel);
+    std::vector<std::array<double, 3>> xyz;
+    std::optional<DF_L1::internal::Uniform_grid> grid;
+    auto point_grid = [&]() -> const DF_L1::internal::Uniform_grid& {
+      if(!grid)
+      {
+        xyz = DF_L1::internal::to_xyz(kept_points_, CGAL::Identity_property_map<Point>());
+        grid.emplace(xyz, 2 * voxel);
+      }
+      return *grid;
+    };
     const DF_L1::internal::Point_support support =
-      denoised_ ? DF_L1::internal::Point_support() : DF_L1::internal::Point_support{&xyz, &grid};
+      denoised_ ? DF_L1::internal::Point_support() : DF_L1::internal::Point_support{&xyz, &point_grid()};
     initial_ = std::make_unique<Initial_skeleton>(DF_L1::internal::extract_initial_skeleton<ConcurrencyTag>(
       *field_, parameters::thinning_coefficient(parameters_.thinning_coefficient,
                parameters::spur_length_ratio(parameters_.spur_length_ratio, parameters::thin_parts(!denoised_, parameters::occupied_depth(denoised_,
@@ -336,8 +345,9 @@ public:
     // left go through the spur pruning again.
     if(DF_L1::skeleton_statistics(initial_->graph).cycles > 0)
     {
-      const double spacing = DF_L1::internal::median_kth_neighbour_distance(xyz, 6, voxel / 2, grid);
-      if(DF_L1::internal::cut_point_gaps(initial_->graph, xyz, grid, voxel, spacing) > 0)
+      const DF_L1::internal::Uniform_grid& points = point_grid();
+      const double spacing = DF_L1::internal::median_kth_neighbour_distance(xyz, 6, voxel / 2, points);
+      if(DF_L1::internal::cut_point_gaps(initial_->graph, xyz, points, voxel, spacing) > 0)
         DF_L1::internal::prune_spurs(initial_->graph, parameters_.spur_length_ratio, voxel, surface_noise_, support);
     }
     assign_points(initial_->graph);
