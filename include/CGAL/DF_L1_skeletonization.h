@@ -22,6 +22,7 @@
 #include <CGAL/DF_L1_skeleton/extract_initial_skeleton.h>
 #include <CGAL/DF_L1_skeleton/flag_sparse_outliers.h>
 #include <CGAL/DF_L1_skeleton/internal/attach_fragments.h>
+#include <CGAL/DF_L1_skeleton/internal/contractible_cycles.h>
 #include <CGAL/DF_L1_skeleton/internal/density_cap.h>
 #include <CGAL/DF_L1_skeleton/internal/memory_estimate.h>
 #include <CGAL/DF_L1_skeleton/internal/normalization.h>
@@ -303,7 +304,8 @@ public:
 
   /// Extracts the initial skeleton (`extract_initial_skeleton()`), cuts its cycles where
   /// they cross a gap between two parts that the points show and the voxels did not
-  /// (parts 1 or 2 voxels apart), and assigns every non-outlier input point to its
+  /// (parts 1 or 2 voxels apart) and those around holes narrower than the sampling
+  /// spacing (\ref design_initial_skeleton), and assigns every non-outlier input point to its
   /// nearest vertex of the graph (a point left out by the density cap, to that of its
   /// representative: `flag_outliers()`).
   ///
@@ -341,13 +343,20 @@ public:
                parameters::surface_noise(surface_noise_))))),
       [this] { refine_memory_estimate(true, "initial skeleton (graph repairs)"); }, support));
     // The cycles through gaps between parts that the voxels could not separate are cut
-    // where the points show the gap (`internal::cut_point_gaps()`); the stubs that are
-    // left go through the spur pruning again.
+    // where the points show the gap (`internal::cut_point_gaps()`). Then the cycles
+    // around holes narrower than the sampling resolves: those whose disk lies in the
+    // solid closed by the sampling spacing (`internal::cut_contractible_cycles()`, which
+    // the thinning ran with a one-voxel closing), the pores between the samples of a
+    // sparse plate. The stubs that a cut leaves go through the spur pruning again.
     if(DF_L1::skeleton_statistics(initial_->graph).cycles > 0)
     {
       const DF_L1::internal::Uniform_grid& points = point_grid();
       const double spacing = DF_L1::internal::median_kth_neighbour_distance(xyz, 6, voxel / 2, points);
       if(DF_L1::internal::cut_point_gaps(initial_->graph, xyz, points, voxel, spacing) > 0)
+        DF_L1::internal::prune_spurs(initial_->graph, parameters_.spur_length_ratio, voxel, surface_noise_, support);
+      const double closing = sampling_closing * spacing / voxel;
+      if(closing > DF_L1::internal::one_voxel_closing && DF_L1::skeleton_statistics(initial_->graph).cycles > 0 &&
+         DF_L1::internal::cut_contractible_cycles(initial_->graph, *field_, field_->labels, closing) > 0)
         DF_L1::internal::prune_spurs(initial_->graph, parameters_.spur_length_ratio, voxel, surface_noise_, support);
     }
     assign_points(initial_->graph);
@@ -878,6 +887,9 @@ private:
   // most max_cells_per_point cells per point (beyond, the cloud is sparser than its
   // cells anyway, and their array would cost more than the points).
   static constexpr double dense_share = 0.5;
+  // The closing of the cycle test after the gap cuts, in sampling spacings (the median
+  // distance to the 6th neighbour): the holes narrower than about three samples.
+  static constexpr double sampling_closing = 1.0;
   static constexpr double max_cells_per_point = 4;
   // the cells of the density cap; empty (size() 0) when there would be too many
   DF_L1::internal::Cell_lattice density_lattice() const

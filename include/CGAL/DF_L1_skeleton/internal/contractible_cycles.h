@@ -109,9 +109,12 @@ bool spans_closed_disk(const Grid_geometry<Traits>& grid, const std::vector<Voxe
 // tested; a cycle through two junctions or more loses its arc of smallest mean radius
 // (the thinner of two parallel paths), one with a single junction the edge opposite it.
 // Returns the number of cuts.
+// sqrt(3) voxels: one step of the 26-neighbourhood
+constexpr double one_voxel_closing = 1.7321;
+
 template <class Traits>
 std::size_t cut_contractible_cycles(Skeleton_graph<Traits>& g, const Grid_geometry<Traits>& grid,
-                                    const std::vector<Voxel_label>& labels, double closing_radius = 1.7321,
+                                    const std::vector<Voxel_label>& labels, double closing_radius = one_voxel_closing,
                                     std::size_t max_cuts = 1000)
 {
   std::size_t cuts = 0;
