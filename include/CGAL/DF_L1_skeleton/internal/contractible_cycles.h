@@ -98,6 +98,9 @@ bool spans_closed_disk(const Grid_geometry<Traits>& grid, const std::vector<Voxe
   return true;
 }
 
+// sqrt(3) voxels: one step of the 26-neighbourhood
+constexpr double one_voxel_closing = 1.7321;
+
 // Removes the cycles of `g` that bound a disk inside the solid of `labels` (occupied
 // and interior voxels) closed by `closing_radius` voxels: the disk may cross exterior
 // voxels, but none farther than that from the solid. Such a cycle goes around a plugged
@@ -109,9 +112,6 @@ bool spans_closed_disk(const Grid_geometry<Traits>& grid, const std::vector<Voxe
 // tested; a cycle through two junctions or more loses its arc of smallest mean radius
 // (the thinner of two parallel paths), one with a single junction the edge opposite it.
 // Returns the number of cuts.
-// sqrt(3) voxels: one step of the 26-neighbourhood
-constexpr double one_voxel_closing = 1.7321;
-
 template <class Traits>
 std::size_t cut_contractible_cycles(Skeleton_graph<Traits>& g, const Grid_geometry<Traits>& grid,
                                     const std::vector<Voxel_label>& labels, double closing_radius = one_voxel_closing,
