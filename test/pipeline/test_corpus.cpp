@@ -248,6 +248,21 @@ TEST_CASE("corpus: twigs whose tips meet across a gap are parted where their tip
     CHECK(designed_topology_checked("trees", 20, degradation).cycles == 0);
 }
 
+TEST_CASE("corpus: the halves of a curve cut across the gap between two legs go with the cut; a twig cut at its tip stays", "[corpus]")
+{
+  // The curve crossed the web between the front legs of close_parts_20 (1.8 voxels
+  // apart); the cut left a half on each leg, whose tip faces the other leg's surface and
+  // passed the spur pruning: 4 ends and 2 junctions instead of 3 and 1.
+  const Topology legs = designed_topology_checked("close_parts", 20, "clean");
+  CHECK(legs.end_points == 3);
+  CHECK(legs.junctions == 1);
+  // A twig whose tip touched another branch is cut at its tip: the half on its side is
+  // the whole twig, far beyond the balls around its fork (the branch across the gap is
+  // near, and must not count).
+  designed_topology_checked("trees", 20, "holes");
+  designed_topology_checked("trees", 24, "noise_0.6");
+}
+
 TEST_CASE("corpus: the sparse half of an unevenly sampled 2,000-point cloud keeps its inside", "[corpus]")
 {
   // Density falling 10:1 along the longest side at 2,000 points: the sparse end's samples

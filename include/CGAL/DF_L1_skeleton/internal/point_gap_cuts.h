@@ -367,6 +367,7 @@ std::size_t cut_point_gaps(Skeleton_graph<Traits>& g, const std::vector<std::arr
   std::vector<char> cut(boost::num_vertices(g), 0);
   std::size_t cuts = 0;
   std::vector<char> cyclic; // recomputed after each cut
+  std::vector<std::size_t> cut_ends; // the neighbours of the cut vertices
   for(const auto& c : candidates)
   {
     if(cyclic.empty())
@@ -374,9 +375,65 @@ std::size_t cut_point_gaps(Skeleton_graph<Traits>& g, const std::vector<std::arr
     if(!cyclic[c.second] || boost::degree(c.second, g) != 2)
       continue;
     cyclic.clear();
+    for(auto w = boost::adjacent_vertices(c.second, g).first; w != boost::adjacent_vertices(c.second, g).second; ++w)
+      cut_ends.push_back(*w);
     boost::clear_vertex(c.second, g);
     cut[c.second] = 1;
     ++cuts;
+  }
+  // A cut through the web between two parts leaves the halves of the curve that crossed
+  // it: each runs from a junction on a part's axis to the gap, and its tip faces the
+  // other part's surface, which the spur pruning takes for the support of a limb. A half
+  // (from an end of a cut to the first vertex not of degree 2) goes when that vertex is a
+  // junction and the tip lies within 3 voxels of the balls of the curves around it (two
+  // of its radii and 2 voxels along them: the part the half came from; the part across
+  // the gap is as near). A twig cut at its tip ends a twig's length beyond them; a cut
+  // through a limb (a C whose ends nearly meet) leaves ends without a junction.
+  std::vector<char> in_stub(boost::num_vertices(g), 0);
+  std::vector<std::pair<std::vector<std::size_t>, std::size_t>> stubs; // (vertices, where it ends)
+  for(std::size_t end : cut_ends)
+  {
+    if(cut[end] || in_stub[end] || boost::degree(end, g) != 1)
+      continue;
+    std::vector<std::size_t> stub(1, end);
+    std::size_t previous = end, current = *boost::adjacent_vertices(end, g).first;
+    while(boost::degree(current, g) == 2)
+    {
+      stub.push_back(current);
+      step(previous, current);
+    }
+    for(std::size_t v : stub)
+      in_stub[v] = 1;
+    stubs.emplace_back(std::move(stub), current);
+  }
+  for(const auto& [stub, junction] : stubs)
+  {
+    if(boost::degree(junction, g) < 3)
+      continue;
+    const double R = CGAL::to_double(g[junction].radius), within = 2 * R + 2 * voxel;
+    double beyond = std::numeric_limits<double>::infinity();
+    std::vector<std::pair<std::size_t, double>> open(1, {junction, 0.0});
+    std::vector<std::size_t> seen(1, junction);
+    while(!open.empty())
+    {
+      const auto [v, along_curve] = open.back();
+      open.pop_back();
+      beyond = (std::min)(beyond, distance(pos(v), pos(stub.front())) - CGAL::to_double(g[v].radius));
+      for(auto w = boost::adjacent_vertices(v, g).first; w != boost::adjacent_vertices(v, g).second; ++w)
+      {
+        const double next = along_curve + distance(pos(v), pos(*w));
+        if(in_stub[*w] || next > within || std::find(seen.begin(), seen.end(), *w) != seen.end())
+          continue;
+        seen.push_back(*w);
+        open.push_back({*w, next});
+      }
+    }
+    if(beyond <= 3 * voxel)
+      for(std::size_t v : stub)
+      {
+        boost::clear_vertex(v, g);
+        cut[v] = 1;
+      }
   }
   for(std::size_t v = boost::num_vertices(g); v-- > 0;)
     if(cut[v])
