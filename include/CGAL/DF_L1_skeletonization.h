@@ -31,6 +31,7 @@
 #include <CGAL/DF_L1_skeleton/internal/point_range.h>
 #include <CGAL/DF_L1_skeleton/internal/sampling_spacing.h>
 #include <CGAL/DF_L1_skeleton/internal/spur_pruning.h>
+#include <CGAL/DF_L1_skeleton/internal/twig_test.h>
 #include <CGAL/DF_L1_skeleton/internal/uniform_grid.h>
 #include <CGAL/DF_L1_skeleton/internal/vec3.h>
 #include <CGAL/DF_L1_skeleton/named_parameters.h>
@@ -359,6 +360,8 @@ public:
          DF_L1::internal::cut_contractible_cycles(initial_->graph, *field_, field_->labels, closing) > 0)
         DF_L1::internal::prune_spurs(initial_->graph, parameters_.spur_length_ratio, voxel, surface_noise_, support);
     }
+    if(denoised_)
+      add_missing_twigs(xyz, point_grid(), voxel);
     assign_points(initial_->graph);
   }
 
@@ -890,6 +893,45 @@ private:
   // The closing of the cycle test after the gap cuts, in sampling spacings (the median
   // distance to the 6th neighbour): the holes narrower than about three samples.
   static constexpr double sampling_closing = 1.0;
+  // The missing twigs of a smoothed cloud reach beyond the balls of the graph by 4 voxels
+  // plus twice the noise estimate (a bump of the noise reaches about that far), and are
+  // thicker than 2.5 noise estimates (about one deviation of the noise, which the fits
+  // underestimate: estimate_surface_noise()).
+  static constexpr double twig_reach_per_noise = 2.0, twig_radius_per_noise = 2.5;
+
+  // The twigs that the thinning of a smoothed cloud lost: their flat, ragged tips are
+  // eaten with the shell (\ref design_initial_skeleton). Branches through the occupied
+  // voxels to the thin parts that reach beyond the balls of the graph
+  // (`add_missing_branches()`), each kept only where the points around the part of it
+  // beyond the balls form a tube apart from the rest, thicker than the noise could fake
+  // (`points_surround_curve()`); the stub left where a curve had stopped short of the
+  // new tip goes with the spur pruning.
+  void add_missing_twigs(const std::vector<std::array<double, 3>>& xyz, const DF_L1::internal::Uniform_grid& points,
+                         double voxel)
+  {
+    refine_memory_estimate(true, "initial skeleton (graph repairs)");
+    const std::vector<float> depth = DF_L1::internal::occupied_depth(*field_);
+    const std::vector<char> candidates = std::move(DF_L1::internal::thin_parts(*field_, 2.0, 4.0).voxels);
+    if(std::find(candidates.begin(), candidates.end(), 1) == candidates.end())
+      return;
+    auto surrounded = [&](const std::vector<std::size_t>& path, std::size_t beyond) {
+      std::vector<std::array<double, 3>> curve;
+      std::vector<double> radius;
+      for(std::size_t i = beyond; i < path.size(); ++i)
+      {
+        const Point c = field_->center(path[i]);
+        curve.push_back({CGAL::to_double(c.x()), CGAL::to_double(c.y()), CGAL::to_double(c.z())});
+        radius.push_back((std::max)(0.5, double(depth[path[i]]) - 0.5) * voxel);
+      }
+      return DF_L1::internal::points_surround_curve(curve, radius, xyz, points, voxel,
+                                                    twig_radius_per_noise * surface_noise_);
+    };
+    if(DF_L1::internal::add_missing_branches(initial_->graph, *field_, depth, candidates,
+                                             4.0 + twig_reach_per_noise * surface_noise_ / voxel, 1.0, 1.3, surrounded) > 0)
+      DF_L1::internal::prune_spurs(initial_->graph, parameters_.spur_length_ratio, voxel, surface_noise_,
+                                   DF_L1::internal::Point_support());
+  }
+
   static constexpr double max_cells_per_point = 4;
   // the cells of the density cap; empty (size() 0) when there would be too many
   DF_L1::internal::Cell_lattice density_lattice() const

@@ -158,17 +158,29 @@ TEST_CASE("corpus: the twigs of smoothed noisy trees keep their ends", "[corpus]
   // Smoothed, a twig 1.75 voxels in radius is 1.4 voxels deep in the occupied voxels:
   // its curve may end there when its radius (not its depth less one, 0.4 voxel) is 0.6
   // of the deepest nearby, and the bumps of the noise are told from twig tips by their
-  // height over the noise. Kept at 0.3 % noise: 0.22 to 0.59 of the tips before, 0.55
-  // to 0.83 now.
+  // height over the noise. The twigs that the thinning still eats get their branches back
+  // where the points surround them as a tube. Kept at 0.3 % noise: 0.22 to 0.59 of the
+  // tips at first, 0.55 to 0.83 with the curve ends, 0.66 to 0.94 (mean 0.80) with the
+  // twigs given back.
   double sum = 0;
   for(int index : {3, 14, 22, 23}) {
     bool denoised = false;
     const double recall = tree_tip_recall(index, "noise_0.3", &denoised);
     CHECK(denoised);
-    CHECK(recall >= 0.5);
+    CHECK(recall >= 0.6);
     sum += recall;
   }
-  CHECK(sum / 4 >= 0.6);
+  CHECK(sum / 4 >= 0.74);
+  // trees whose twigs all come back (12 of 16 ends, 27 of 28 and 16 of 17 without)
+  designed_topology_checked("trees", 1, "noise_0.3");
+  designed_topology_checked("trees", 2, "noise_0.6");
+  designed_topology_checked("trees", 10, "noise_1.0");
+  // The ragged shell of a noisy frame or palm surrounds a curve through it as a twig's
+  // surface does, but spreads beyond it: without that test, 3 ends on the frame of
+  // loops_12 and 6 on close_parts_19 (3 designed) at 1 % noise. (The test of the radius
+  // against the noise is the real-scan test of the noisy dinosaurs: a finger on a hand.)
+  designed_topology_checked("loops", 12, "noise_1.0");
+  designed_topology_checked("close_parts", 19, "noise_1.0");
 }
 
 TEST_CASE("corpus: a plate thinned to pieces is joined through its occupied voxels", "[corpus]")

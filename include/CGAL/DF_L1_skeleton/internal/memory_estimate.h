@@ -123,7 +123,9 @@ constexpr double memory_thinning_bytes_per_interior_voxel = 16;
 //   (vertex of each voxel 8, shape components 4, the deepest-path search's costs 8 and
 //   predecessors 8, and the occupied depth 4 when there is no thin-part depth) and
 //   adding the missing branches (excess 8, vertex of each voxel 8, costs 8,
-//   predecessors 8): 32.
+//   predecessors 8): 32. In a smoothed cloud the twigs given back after the gap cuts
+//   hold the occupied depth (4) and the thin-part candidates (1) beside those 32, and
+//   before them the occupied depth beside the thin-part search (4 + 20): within 11 + 32.
 constexpr double memory_thin_repair_bytes_per_voxel = 13 + 32;
 constexpr double memory_occupied_repair_bytes_per_voxel = 11 + 32;
 // Per point, while the voxels exist: the caller's points and normals (24 + 24, the

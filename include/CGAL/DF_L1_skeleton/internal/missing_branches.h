@@ -40,11 +40,19 @@ namespace internal {
 // layer at the tip). The excess is then lowered from the new vertices; a tip whose path
 // is all surface layer adds nothing, and the excess is lowered from that path instead.
 // `depth`: per voxel, the distance (voxels) to the nearest voxel that is not occupied.
+// `accept(path, beyond)` may refuse a branch, told its path (voxels from the graph to the
+// tip) and where the part beyond the enlarged balls (of positive excess) starts in it; a
+// refused path lowers the excess as a path of surface layer does.
 // Returns the number of branches added.
-template <class Traits>
+struct Accept_every_branch
+{
+  bool operator()(const std::vector<std::size_t>&, std::size_t) const { return true; }
+};
+
+template <class Traits, class Accept = Accept_every_branch>
 std::size_t add_missing_branches(Skeleton_graph<Traits>& g, const Distance_field<Traits>& field,
                                  const std::vector<float>& depth, const std::vector<char>& tips, double reach,
-                                 double per_radius, double min_depth)
+                                 double per_radius, double min_depth, const Accept& accept = Accept())
 {
   typedef typename boost::graph_traits<Skeleton_graph<Traits>>::vertex_descriptor vertex;
   typedef std::pair<double, std::size_t> Entry;
@@ -126,6 +134,15 @@ std::size_t add_missing_branches(Skeleton_graph<Traits>& g, const Distance_field
     {
       shallow.push_back({path.back(), 0.0});
       path.pop_back();
+    }
+    std::size_t beyond = path.size();
+    while(beyond > 1 && excess[path[beyond - 1]] > 0)
+      --beyond;
+    if(path.size() > 1 && !accept(path, beyond))
+    {
+      for(std::size_t v : path)
+        shallow.push_back({v, 0.0});
+      path.resize(1);
     }
     if(path.size() > 1)
     {
