@@ -21,6 +21,12 @@ namespace CGAL {
 namespace DF_L1 {
 namespace internal {
 
+// The default of add_missing_branches(): every branch is kept.
+struct Accept_every_branch
+{
+  bool operator()(const std::vector<std::size_t>&, std::size_t) const { return true; }
+};
+
 // Adds the branches that thinning lost: the parts of the solid that reach farther from
 // the curve graph than its balls explain. Thinning in the order of depth eats a limb
 // from its tip when the depth there is flat (a twig two or three voxels wide is one
@@ -44,11 +50,6 @@ namespace internal {
 // tip) and where the part beyond the enlarged balls (of positive excess) starts in it; a
 // refused path lowers the excess as a path of surface layer does.
 // Returns the number of branches added.
-struct Accept_every_branch
-{
-  bool operator()(const std::vector<std::size_t>&, std::size_t) const { return true; }
-};
-
 template <class Traits, class Accept = Accept_every_branch>
 std::size_t add_missing_branches(Skeleton_graph<Traits>& g, const Distance_field<Traits>& field,
                                  const std::vector<float>& depth, const std::vector<char>& tips, double reach,
