@@ -915,12 +915,11 @@ private:
     if(std::find(candidates.begin(), candidates.end(), 1) == candidates.end())
       return;
     auto surrounded = [&](const std::vector<std::size_t>& path, std::size_t beyond) {
-      std::vector<std::array<double, 3>> curve;
+      std::vector<DF_L1::internal::Vec3> curve;
       std::vector<double> radius;
       for(std::size_t i = beyond; i < path.size(); ++i)
       {
-        const Point c = field_->center(path[i]);
-        curve.push_back({CGAL::to_double(c.x()), CGAL::to_double(c.y()), CGAL::to_double(c.z())});
+        curve.push_back(DF_L1::internal::to_vec3(field_->center(path[i])));
         radius.push_back((std::max)(0.5, double(depth[path[i]]) - 0.5) * voxel);
       }
       return DF_L1::internal::points_surround_curve(curve, radius, xyz, points, voxel,

@@ -4,8 +4,8 @@
 #define CGAL_DF_L1_SKELETON_INTERNAL_TWIG_TEST_H
 
 #include <CGAL/DF_L1_skeleton/internal/uniform_grid.h>
+#include <CGAL/DF_L1_skeleton/internal/vec3.h>
 
-#include <array>
 #include <cmath>
 #include <cstddef>
 #include <vector>
@@ -25,37 +25,26 @@ namespace internal {
 // when, at more than half of its points, 6 sectors or more are held, at most a quarter as
 // many points lie beyond as within, and those within lie `min_radius` or more from the
 // curve on average (a tube thinner than the noise is a clump of it).
-inline bool points_surround_curve(const std::vector<std::array<double, 3>>& curve, const std::vector<double>& radius,
-                                  const std::vector<std::array<double, 3>>& xyz, const Uniform_grid& grid, double voxel,
-                                  double min_radius)
+inline bool points_surround_curve(const std::vector<Vec3>& curve, const std::vector<double>& radius,
+                                  const std::vector<Vec3>& xyz, const Uniform_grid& grid, double voxel, double min_radius)
 {
-  typedef std::array<double, 3> A;
   const std::size_t n = curve.size();
-  auto sub = [](const A& a, const A& b) { return A{a[0] - b[0], a[1] - b[1], a[2] - b[2]}; };
-  auto dot = [](const A& a, const A& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; };
-  auto cross = [](const A& a, const A& b) {
-    return A{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-  };
-  auto normalized = [&](const A& a) {
-    const double l = std::sqrt(dot(a, a));
-    return l > 0 ? A{a[0] / l, a[1] / l, a[2] / l} : a;
-  };
   const double pi = 3.14159265358979323846;
   std::size_t tested = 0, surrounded = 0;
   for(std::size_t i = 0; i < n; ++i)
   {
-    const A d = normalized(sub(curve[i + 2 < n ? i + 2 : n - 1], curve[i >= 2 ? i - 2 : 0]));
+    const Vec3 d = normalized(curve[i + 2 < n ? i + 2 : n - 1] - curve[i >= 2 ? i - 2 : 0]);
     if(!(dot(d, d) > 0.5))
       continue;
     // a frame across the curve
-    const A helper = std::abs(d[0]) < 0.9 ? A{1, 0, 0} : A{0, 1, 0};
-    const A u = normalized(cross(d, helper)), v = cross(d, u);
+    const Vec3 helper = std::abs(d[0]) < 0.9 ? Vec3{{1, 0, 0}} : Vec3{{0, 1, 0}};
+    const Vec3 u = normalized(cross(d, helper)), v = cross(d, u);
     const double inner = radius[i] + 1.5 * voxel, outer = 2 * inner;
     unsigned int sectors = 0;
     std::size_t near = 0, far = 0;
     double radial_sum = 0;
     grid.for_each_in_ball(curve[i], outer, [&](std::size_t j, double) {
-      const A x = sub(xyz[j], curve[i]);
+      const Vec3 x = xyz[j] - curve[i];
       const double a = dot(x, d);
       if(std::abs(a) > 0.5 * voxel)
         return true;
